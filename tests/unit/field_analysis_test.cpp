@@ -1,0 +1,195 @@
+#include "field/field_analysis.h"
+#include "field/field_io.h"
+#include "mesh/mesh_io.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+using namespace fcql;
+
+namespace {
+
+// A cube [-1,1]^3 with sharp edges, each side an n×n grid of split squares, welded, outward.
+SurfaceMesh sharpCube(int n) {
+  std::vector<Vec3> p;
+  std::vector<std::array<int, 3>> faces;
+  std::map<std::array<long, 3>, int> index;
+  auto vertexAt = [&](const Vec3& x) {
+    std::array<long, 3> key = {std::lround(x.x() * 1e6), std::lround(x.y() * 1e6), std::lround(x.z() * 1e6)};
+    auto it = index.find(key);
+    if (it != index.end()) return it->second;
+    p.push_back(x);
+    return index[key] = int(p.size()) - 1;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2) {
+      Vec3 normal = Vec3::Zero();
+      normal[axis] = side;
+      Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+      a[(axis + 1) % 3] = 1;
+      b[(axis + 2) % 3] = 1;
+      if (side < 0) std::swap(a, b);  // keep (a, b, normal) right-handed
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          auto at = [&](int ii, int jj) {
+            return vertexAt(normal + a * (-1 + 2.0 * ii / n) + b * (-1 + 2.0 * jj / n));
+          };
+          int v00 = at(i, j), v10 = at(i + 1, j), v11 = at(i + 1, j + 1), v01 = at(i, j + 1);
+          faces.push_back({v00, v10, v11});
+          faces.push_back({v00, v11, v01});
+        }
+    }
+  return SurfaceMesh(p, faces);
+}
+
+// Per face, the coordinate axis of lowest index that lies in the face plane.
+CrossField axisField(const SurfaceMesh& m) {
+  std::vector<Vec3> u(m.numFaces());
+  for (int f = 0; f < m.numFaces(); ++f) {
+    const Vec3& n = m.faceNormal(f);
+    u[f] = std::abs(n.x()) < 0.5 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  }
+  return CrossField::fromVectors(m, u);
+}
+
+SurfaceMesh flatGrid(int n) {
+  std::vector<Vec3> p;
+  std::vector<std::array<int, 3>> f;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      f.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      f.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return SurfaceMesh(p, f);
+}
+
+}  // namespace
+
+TEST(FieldAnalysis, MatchingsAreInverseAcrossEachEdge) {
+  SurfaceMesh m = sharpCube(3);
+  std::vector<Vec3> u(m.numFaces());
+  for (int f = 0; f < m.numFaces(); ++f) {  // an arbitrary, non-smooth field
+    Vec3 t = m.faceFrameX(f) * std::cos(0.7 * f) + m.faceFrameY(f) * std::sin(0.7 * f);
+    u[f] = t;
+  }
+  CrossField field = CrossField::fromVectors(m, u);
+  FieldAnalysis a = analyzeField(m, field);
+  for (int f = 0; f < m.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      int g = m.adjacentFace(f, i), j = m.adjacentEdge(f, i);
+      EXPECT_EQ((a.matching[f][i] + a.matching[g][j]) % 4, 0);
+      // Direction 0 of f carried across the edge lands within 45° of direction matching of g.
+      Vec3 carried = field.direction(m, f, 0);
+      Vec3 target = unfoldIntoFace(m, f, i, field.direction(m, g, a.matching[f][i]));
+      EXPECT_GT(carried.dot(target), std::cos(M_PI / 4) - 1e-9);
+    }
+  // Whatever the field, interior indices of a closed surface sum to χ = 2.
+  EXPECT_EQ(a.indexSumQuarters(), 4 * 2);
+}
+
+TEST(FieldAnalysis, CubeCornersAreThreePortSingularitiesAlongTheEdges) {
+  SurfaceMesh m = sharpCube(4);
+  CrossField field = axisField(m);
+  FieldAnalysis a = analyzeField(m, field);
+  ASSERT_EQ(a.numInteriorSingularities(), 8);
+  EXPECT_EQ(a.indexSumQuarters(), 8);
+  EXPECT_EQ(a.numPorts(), 24);
+  for (const auto& s : a.singularities) {
+    EXPECT_EQ(s.indexQuarters, 1);
+    const Vec3& corner = m.position(s.vertex);
+    EXPECT_NEAR(corner.cwiseAbs().minCoeff(), 1.0, 1e-12) << "singularity not at a cube corner";
+    ASSERT_EQ(s.ports.size(), 3u);
+    // Each port runs along one of the three cube edges leaving the corner, all distinct.
+    std::set<int> axes;
+    for (const auto& port : s.ports) {
+      int axis;
+      double along = port.tangent.cwiseAbs().maxCoeff(&axis);
+      EXPECT_NEAR(along, 1.0, 1e-9);
+      EXPECT_LT(port.tangent[axis] * corner[axis], 0) << "port points away from the cube";
+      axes.insert(axis);
+      // The port follows the field direction it names, inside the face it names.
+      EXPECT_NEAR(field.direction(m, port.face, port.fieldDirection).dot(port.tangent), 1.0, 1e-9);
+      EXPECT_NEAR(m.faceNormal(port.face).dot(port.tangent), 0.0, 1e-9);
+    }
+    EXPECT_EQ(axes.size(), 3u);
+  }
+}
+
+TEST(FieldAnalysis, FlatSquareWithConstantFieldHasFourBorderCorners) {
+  SurfaceMesh m = flatGrid(5);
+  std::vector<Vec3> u(m.numFaces(), Vec3(1, 0, 0));
+  CrossField field = CrossField::fromVectors(m, u);
+  FieldAnalysis a = analyzeField(m, field);
+  EXPECT_EQ(a.numInteriorSingularities(), 0);
+  EXPECT_EQ(a.numBorderSingularities(), 4);
+  EXPECT_EQ(a.indexSumQuarters(), 4 * m.eulerCharacteristic());
+  for (const auto& s : a.singularities) {
+    EXPECT_TRUE(s.onBorder);
+    EXPECT_EQ(s.indexQuarters, 1);
+    EXPECT_TRUE(s.ports.empty()) << "a convex 90-degree corner has no port into the surface";
+  }
+  // A straight border vertex has exactly one port, orthogonal to the border, pointing inside.
+  int v = 2;  // (2, 0) on the bottom side
+  auto ports = computePorts(m, field, v);
+  ASSERT_EQ(ports.size(), 1u);
+  EXPECT_NEAR(ports[0].tangent.y(), 1.0, 1e-9);
+  // An interior regular vertex has four ports along ±x and ±y.
+  auto interior = computePorts(m, field, 2 * 6 + 2);
+  ASSERT_EQ(interior.size(), 4u);
+  for (const auto& p : interior) EXPECT_NEAR(p.tangent.cwiseAbs().maxCoeff(), 1.0, 1e-9);
+  EXPECT_NEAR(interior[1].flatAngle - interior[0].flatAngle, M_PI / 2, 1e-9);
+}
+
+TEST(FieldAnalysis, FormatsQuarterIndices) {
+  EXPECT_EQ(formatQuarterIndex(-1), "-1/4");
+  EXPECT_EQ(formatQuarterIndex(1), "1/4");
+  EXPECT_EQ(formatQuarterIndex(2), "1/2");
+  EXPECT_EQ(formatQuarterIndex(-3), "-3/4");
+  EXPECT_EQ(formatQuarterIndex(4), "1");
+  EXPECT_EQ(formatQuarterIndex(0), "0");
+}
+
+TEST(FieldAnalysis, EightWithItsFieldHas24Singularities) {
+  FCQL_REQUIRE_SHARED(obj, "eight.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField field = loadField(m, fcql::test::sharedMesh("eight.ffield"));
+  FieldAnalysis a = analyzeField(m, field);
+  EXPECT_EQ(a.numInteriorSingularities(), 24);
+  auto histogram = a.interiorHistogram();
+  std::map<std::string, int> hist(histogram.begin(), histogram.end());
+  EXPECT_EQ(hist["-1/4"], 16);
+  EXPECT_EQ(hist["1/4"], 8);
+  EXPECT_EQ(a.indexSumQuarters(), 4 * m.eulerCharacteristic());
+  EXPECT_EQ(m.eulerCharacteristic(), -2);
+  // 5 ports at index -1/4, 3 at +1/4, all with distinct flattened angles around the vertex.
+  for (const auto& s : a.singularities) {
+    ASSERT_EQ(int(s.ports.size()), 4 - s.indexQuarters) << "vertex " << s.vertex;
+    for (std::size_t i = 1; i < s.ports.size(); ++i)
+      EXPECT_GT(s.ports[i].flatAngle, s.ports[i - 1].flatAngle);
+  }
+  EXPECT_EQ(a.numPorts(), 16 * 5 + 8 * 3);
+}
+
+TEST(FieldAnalysis, SharedFieldsSumToEulerCharacteristic) {
+  for (const char* name : {"dragon", "lilium"}) {
+    std::string obj = fcql::test::sharedMesh(std::string(name) + ".obj");
+    if (obj.empty()) GTEST_SKIP() << "../shared is absent: skipped";
+    SurfaceMesh m = loadMesh(obj);
+    FieldAnalysis a = analyzeField(m, loadField(m, fcql::test::sharedMesh(std::string(name) + ".ffield")));
+    if (m.numBorderLoops() == 0) {
+      EXPECT_EQ(a.indexSumQuarters(), 4 * m.eulerCharacteristic()) << name;
+    }
+    if (std::string(name) == "dragon") {
+      EXPECT_EQ(a.numInteriorSingularities(), 795);  // SOURCES.md: a noisy field
+    } else {
+      EXPECT_EQ(a.numInteriorSingularities(), 15);  // SOURCES.md: {-1/4: 6, 1/4: 8, 1/2: 1}
+    }
+  }
+}

@@ -1,0 +1,276 @@
+#include "field/field_analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace fcql {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kQuarter = kPi / 2;
+
+/// x minus the nearest multiple of π/2: the smallest turn between two directions of crosses.
+double wrapQuarter(double x) { return x - std::round(x / kQuarter) * kQuarter; }
+
+double signedAngle(const Vec3& from, const Vec3& to, const Vec3& normal) {
+  return std::atan2(normal.dot(from.cross(to)), from.dot(to));
+}
+
+/// A rotation of `v` by `angle` about the unit `axis` (v orthogonal to the axis).
+Vec3 rotateInPlane(const Vec3& v, const Vec3& axis, double angle) {
+  return v * std::cos(angle) + axis.cross(v) * std::sin(angle);
+}
+
+/// The cut-open chart of a vertex star, with the field carried around it.
+struct StarWalk {
+  std::vector<double> start;  ///< chart angle of each star face's outgoing edge; size n+1
+  std::vector<double> psi;    ///< chart angle of the carried direction in each face
+  std::vector<double> delta;  ///< turn from face k to face k+1 (n-1 entries, n for a loop)
+  double theta = 0;           ///< total angle of the star
+  bool loop = false;
+};
+
+/// Chart angle of the field's u in star face k.
+double chartAngleOfU(const SurfaceMesh& mesh, const CrossField& field, const StarCorner& sc, double start) {
+  Vec3 outgoing = mesh.edgeVector(sc.face, sc.corner);
+  return start + signedAngle(outgoing, field.u[sc.face], mesh.faceNormal(sc.face));
+}
+
+StarWalk walkStar(const SurfaceMesh& mesh, const CrossField& field, int v) {
+  const auto& star = mesh.star(v);
+  const int n = int(star.size());
+  StarWalk w;
+  w.loop = !mesh.isBorderVertex(v);
+  w.start.resize(n + 1);
+  w.start[0] = 0;
+  for (int k = 0; k < n; ++k) w.start[k + 1] = w.start[k] + mesh.cornerAngle(star[k].face, star[k].corner);
+  w.theta = w.start[n];
+  w.psi.resize(n);
+  w.psi[0] = chartAngleOfU(mesh, field, star[0], 0);
+  for (int k = 0; k + 1 < n; ++k) {
+    double phi = chartAngleOfU(mesh, field, star[k + 1], w.start[k + 1]);
+    double d = wrapQuarter(phi - w.psi[k]);
+    if (std::abs(d) < 1e-12) d = 0;  // numerically parallel crosses do not turn
+    w.delta.push_back(d);
+    w.psi[k + 1] = w.psi[k] + d;
+  }
+  if (w.loop) {
+    // Back to face 0, seen across the seam of the chart: its angles are shifted by Θ.
+    double phi = w.psi[0] + w.theta;
+    double d = wrapQuarter(phi - w.psi[n - 1]);
+    w.delta.push_back(std::abs(d) < 1e-12 ? 0 : d);
+  }
+  return w;
+}
+
+struct PortEvent {
+  double t;
+  int sign;   ///< +1: the field becomes radial going counter-clockwise; −1: a spurious touch
+  int face;   ///< star index of the face holding the tangent
+};
+
+/// Levels L = m·π/2 with lo < L <= hi.
+std::vector<double> levelsIn(double lo, double hi) {
+  std::vector<double> out;
+  for (double m = std::floor(lo / kQuarter); m * kQuarter <= hi; m += 1)
+    if (m * kQuarter > lo) out.push_back(m * kQuarter);
+  return out;
+}
+
+/// g(t) = ψ(t) − t is the angle between the field and the radial direction at chart angle t.
+/// Ports are where g crosses a multiple of π/2 downward (see the header for the count). The
+/// values of g at the ends of consecutive faces are chained (start of k+1 = end of k + δ_k) so
+/// that a crossing exactly on an edge is counted once.
+std::vector<PortEvent> portEvents(const StarWalk& w) {
+  const int n = int(w.psi.size());
+  std::vector<PortEvent> events;
+  double gStart = w.psi[0] - w.start[0];
+  for (int k = 0; k < n; ++k) {
+    double span = w.start[k + 1] - w.start[k];
+    double gEnd = gStart - span;
+    for (double L : levelsIn(gEnd, gStart)) events.push_back({w.start[k] + (gStart - L), +1, k});
+    bool hasJump = k + 1 < n || w.loop;
+    if (!hasJump) {
+      // Border vertex: a direction exactly along the last (border) edge is kept here and
+      // removed later with the other border-aligned directions.
+      if (std::fmod(gEnd, kQuarter) == 0) events.push_back({w.start[k + 1], +1, k});
+      break;
+    }
+    double d = w.delta[k];
+    int nextFace = (k + 1) % n;
+    if (d > 0) {
+      for (std::size_t c = levelsIn(gEnd, gEnd + d).size(); c > 0; --c) events.push_back({w.start[k + 1], -1, nextFace});
+    } else if (d < 0) {
+      for (std::size_t c = levelsIn(gEnd + d, gEnd).size(); c > 0; --c) events.push_back({w.start[k + 1], +1, nextFace});
+    }
+    gStart = gEnd + d;
+  }
+  // A port found at the very end of a loop (chart angle Θ) is the same as one at angle 0.
+  for (auto& e : events)
+    if (w.loop && e.t >= w.theta) e.t -= w.theta, e.face = 0;
+  return events;
+}
+
+/// Cancels each −1 event against the nearest +1 event (cyclically for a loop).
+std::vector<PortEvent> cancelSpurious(std::vector<PortEvent> events, double theta, bool loop) {
+  for (;;) {
+    auto neg = std::find_if(events.begin(), events.end(), [](const PortEvent& e) { return e.sign < 0; });
+    if (neg == events.end()) break;
+    double best = 1e300;
+    std::size_t bestIndex = events.size();
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      if (events[i].sign < 0) continue;
+      double d = std::abs(events[i].t - neg->t);
+      if (loop) d = std::min(d, theta - d);
+      if (d < best) best = d, bestIndex = i;
+    }
+    std::size_t negIndex = std::size_t(neg - events.begin());
+    if (bestIndex == events.size()) {
+      events.erase(events.begin() + negIndex);
+      continue;
+    }
+    std::size_t a = std::max(bestIndex, negIndex), b = std::min(bestIndex, negIndex);
+    events.erase(events.begin() + a);
+    events.erase(events.begin() + b);
+  }
+  return events;
+}
+
+Port makePort(const SurfaceMesh& mesh, const CrossField& field, int v, const StarWalk& w,
+              const PortEvent& e) {
+  const auto& sc = mesh.star(v)[e.face];
+  Port p;
+  p.vertex = v;
+  p.face = sc.face;
+  p.chartAngle = e.t;
+  double scale = (w.loop ? 2 * kPi : kPi) / w.theta;
+  p.flatAngle = e.t * scale;
+  Vec3 outgoing = mesh.edgeVector(sc.face, sc.corner).normalized();
+  double within = std::clamp(e.t - w.start[e.face], 0.0, w.start[e.face + 1] - w.start[e.face]);
+  p.tangent = rotateInPlane(outgoing, mesh.faceNormal(sc.face), within).normalized();
+  double a = signedAngle(field.u[sc.face], p.tangent, mesh.faceNormal(sc.face));
+  p.fieldDirection = ((int(std::lround(a / kQuarter)) % 4) + 4) % 4;
+  return p;
+}
+
+int quartersFromTurn(double quarters) { return int(std::lround(quarters)); }
+
+}  // namespace
+
+std::string formatQuarterIndex(int quarters) {
+  if (quarters == 0) return "0";
+  int num = quarters, den = 4;
+  int g = std::gcd(std::abs(num), den);
+  num /= g;
+  den /= g;
+  return den == 1 ? std::to_string(num) : std::to_string(num) + "/" + std::to_string(den);
+}
+
+Vec3 unfoldIntoFace(const SurfaceMesh& mesh, int f, int i, const Vec3& vectorInG) {
+  int g = mesh.adjacentFace(f, i);
+  if (g < 0) return vectorInG;
+  Vec3 e = mesh.edgeVector(f, i).normalized();
+  Vec3 perpF = mesh.faceNormal(f).cross(e);
+  Vec3 perpG = mesh.faceNormal(g).cross(e);
+  return e * vectorInG.dot(e) + perpF * vectorInG.dot(perpG);
+}
+
+double transportAngle(const SurfaceMesh& mesh, int f, int i, const Vec3& d, const Vec3& e) {
+  return signedAngle(d, unfoldIntoFace(mesh, f, i, e), mesh.faceNormal(f));
+}
+
+int computeMatching(const SurfaceMesh& mesh, const CrossField& field, int f, int i) {
+  if (mesh.adjacentFace(f, i) < 0) return 0;
+  double a = transportAngle(mesh, f, i, field.u[f], field.u[mesh.adjacentFace(f, i)]);
+  // Direction k of f is closest to direction 0 of g, so direction j of f goes to j − k.
+  int k = int(std::lround(a / kQuarter));
+  return ((-k) % 4 + 4) % 4;
+}
+
+std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field, int v) {
+  if (mesh.star(v).empty()) return {};
+  StarWalk w = walkStar(mesh, field, v);
+  std::vector<PortEvent> events = cancelSpurious(portEvents(w), w.theta, w.loop);
+  std::sort(events.begin(), events.end(), [](const PortEvent& a, const PortEvent& b) { return a.t < b.t; });
+  if (!w.loop) {
+    // Keep only directions pointing into the surface: drop the ones along the border edges,
+    // nearest to the two ends first, until the expected count 1 − 4·I_b remains.
+    double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
+    double ms = wrapQuarter(w.psi.front() - 0.0);
+    double me = wrapQuarter(w.psi.back() - w.theta);
+    int indexQuarters = quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
+    int expected = std::max(0, 1 - indexQuarters);
+    while (int(events.size()) > expected) {
+      if (events.front().t <= w.theta - events.back().t) events.erase(events.begin());
+      else events.pop_back();
+    }
+  }
+  std::vector<Port> ports;
+  for (const auto& e : events) ports.push_back(makePort(mesh, field, v, w, e));
+  return ports;
+}
+
+FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
+  if (field.numFaces() != mesh.numFaces())
+    throw FieldError("the field has " + std::to_string(field.numFaces()) + " faces but the mesh has " +
+                     std::to_string(mesh.numFaces()));
+  FieldAnalysis out;
+  out.matching.assign(mesh.numFaces(), {0, 0, 0});
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i) out.matching[f][i] = computeMatching(mesh, field, f, i);
+  out.vertexIndexQuarters.assign(mesh.numVertices(), 0);
+  out.starAngle.assign(mesh.numVertices(), 0);
+  for (int v = 0; v < mesh.numVertices(); ++v) {
+    if (mesh.star(v).empty()) continue;
+    StarWalk w = walkStar(mesh, field, v);
+    out.starAngle[v] = w.theta;
+    double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
+    int quarters;
+    if (w.loop) {
+      quarters = quartersFromTurn(4 * (1 + (sumDelta - w.theta) / (2 * kPi)));
+    } else {
+      double ms = wrapQuarter(w.psi.front() - 0.0);
+      double me = wrapQuarter(w.psi.back() - w.theta);
+      quarters = quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
+    }
+    out.vertexIndexQuarters[v] = quarters;
+    if (quarters != 0) {
+      SingularVertex s;
+      s.vertex = v;
+      s.indexQuarters = quarters;
+      s.onBorder = !w.loop;
+      s.ports = computePorts(mesh, field, v);
+      out.singularities.push_back(std::move(s));
+    }
+  }
+  return out;
+}
+
+int FieldAnalysis::numInteriorSingularities() const {
+  return int(std::count_if(singularities.begin(), singularities.end(), [](const SingularVertex& s) { return !s.onBorder; }));
+}
+int FieldAnalysis::numBorderSingularities() const { return int(singularities.size()) - numInteriorSingularities(); }
+int FieldAnalysis::numPorts() const {
+  int n = 0;
+  for (const auto& s : singularities) n += int(s.ports.size());
+  return n;
+}
+int FieldAnalysis::indexSumQuarters() const {
+  return std::accumulate(vertexIndexQuarters.begin(), vertexIndexQuarters.end(), 0);
+}
+std::vector<std::pair<std::string, int>> FieldAnalysis::interiorHistogram() const {
+  std::vector<std::pair<int, int>> counts;
+  for (const auto& s : singularities) {
+    if (s.onBorder) continue;
+    auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == s.indexQuarters; });
+    if (it == counts.end()) counts.push_back({s.indexQuarters, 1});
+    else ++it->second;
+  }
+  std::sort(counts.begin(), counts.end());
+  std::vector<std::pair<std::string, int>> out;
+  for (const auto& c : counts) out.push_back({formatQuarterIndex(c.first), c.second});
+  return out;
+}
+
+}  // namespace fcql
