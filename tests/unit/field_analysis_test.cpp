@@ -193,3 +193,18 @@ TEST(FieldAnalysis, SharedFieldsSumToEulerCharacteristic) {
     }
   }
 }
+
+TEST(FieldAnalysis, StarChartCarriesOneDirectionAroundTheVertex) {
+  SurfaceMesh m = sharpCube(3);
+  CrossField field = axisField(m);
+  for (int v : {0, 5, 17}) {
+    StarChart c = computeStarChart(m, field, v);
+    ASSERT_EQ(c.psi.size(), m.star(v).size());
+    for (std::size_t k = 0; k < c.psi.size(); ++k) {
+      int f = m.star(v)[k].face;
+      double angle = c.chartAngleOf(m, int(k), field.direction(m, f, c.carried[k]));
+      EXPECT_NEAR(std::remainder(angle - c.psi[k], 2 * M_PI), 0, 1e-9) << "vertex " << v << " face " << k;
+    }
+    EXPECT_NEAR(c.theta * c.flatScale, 2 * M_PI, 1e-12);
+  }
+}

@@ -22,25 +22,19 @@ Vec3 rotateInPlane(const Vec3& v, const Vec3& axis, double angle) {
   return v * std::cos(angle) + axis.cross(v) * std::sin(angle);
 }
 
-/// The cut-open chart of a vertex star, with the field carried around it.
-struct StarWalk {
-  std::vector<double> start;  ///< chart angle of each star face's outgoing edge; size n+1
-  std::vector<double> psi;    ///< chart angle of the carried direction in each face
-  std::vector<double> delta;  ///< turn from face k to face k+1 (n-1 entries, n for a loop)
-  double theta = 0;           ///< total angle of the star
-  bool loop = false;
-};
-
-/// Chart angle of the field's u in star face k.
+/// Chart angle of the field's u in a star face whose outgoing edge is at chart angle `start`.
 double chartAngleOfU(const SurfaceMesh& mesh, const CrossField& field, const StarCorner& sc, double start) {
   Vec3 outgoing = mesh.edgeVector(sc.face, sc.corner);
   return start + signedAngle(outgoing, field.u[sc.face], mesh.faceNormal(sc.face));
 }
 
-StarWalk walkStar(const SurfaceMesh& mesh, const CrossField& field, int v) {
+}  // namespace
+
+StarChart computeStarChart(const SurfaceMesh& mesh, const CrossField& field, int v) {
   const auto& star = mesh.star(v);
   const int n = int(star.size());
-  StarWalk w;
+  StarChart w;
+  w.vertex = v;
   w.loop = !mesh.isBorderVertex(v);
   w.start.resize(n + 1);
   w.start[0] = 0;
@@ -48,13 +42,16 @@ StarWalk walkStar(const SurfaceMesh& mesh, const CrossField& field, int v) {
   w.theta = w.start[n];
   w.psi.resize(n);
   w.psi[0] = chartAngleOfU(mesh, field, star[0], 0);
+  w.carried.assign(n, 0);
   for (int k = 0; k + 1 < n; ++k) {
     double phi = chartAngleOfU(mesh, field, star[k + 1], w.start[k + 1]);
     double d = wrapQuarter(phi - w.psi[k]);
     if (std::abs(d) < 1e-12) d = 0;  // numerically parallel crosses do not turn
     w.delta.push_back(d);
     w.psi[k + 1] = w.psi[k] + d;
+    w.carried[k + 1] = ((int(std::lround((w.psi[k + 1] - phi) / kQuarter)) % 4) + 4) % 4;
   }
+  w.flatScale = (w.loop ? 2 * kPi : kPi) / w.theta;
   if (w.loop) {
     // Back to face 0, seen across the seam of the chart: its angles are shifted by Θ.
     double phi = w.psi[0] + w.theta;
@@ -63,6 +60,13 @@ StarWalk walkStar(const SurfaceMesh& mesh, const CrossField& field, int v) {
   }
   return w;
 }
+
+double StarChart::chartAngleOf(const SurfaceMesh& mesh, int k, const Vec3& direction) const {
+  const auto& sc = mesh.star(vertex)[k];
+  return start[k] + signedAngle(mesh.edgeVector(sc.face, sc.corner), direction, mesh.faceNormal(sc.face));
+}
+
+namespace {
 
 struct PortEvent {
   double t;
@@ -82,7 +86,7 @@ std::vector<double> levelsIn(double lo, double hi) {
 /// Ports are where g crosses a multiple of π/2 downward (see the header for the count). The
 /// values of g at the ends of consecutive faces are chained (start of k+1 = end of k + δ_k) so
 /// that a crossing exactly on an edge is counted once.
-std::vector<PortEvent> portEvents(const StarWalk& w) {
+std::vector<PortEvent> portEvents(const StarChart& w) {
   const int n = int(w.psi.size());
   std::vector<PortEvent> events;
   double gStart = w.psi[0] - w.start[0];
@@ -137,15 +141,14 @@ std::vector<PortEvent> cancelSpurious(std::vector<PortEvent> events, double thet
   return events;
 }
 
-Port makePort(const SurfaceMesh& mesh, const CrossField& field, int v, const StarWalk& w,
+Port makePort(const SurfaceMesh& mesh, const CrossField& field, int v, const StarChart& w,
               const PortEvent& e) {
   const auto& sc = mesh.star(v)[e.face];
   Port p;
   p.vertex = v;
   p.face = sc.face;
   p.chartAngle = e.t;
-  double scale = (w.loop ? 2 * kPi : kPi) / w.theta;
-  p.flatAngle = e.t * scale;
+  p.flatAngle = e.t * w.flatScale;
   Vec3 outgoing = mesh.edgeVector(sc.face, sc.corner).normalized();
   double within = std::clamp(e.t - w.start[e.face], 0.0, w.start[e.face + 1] - w.start[e.face]);
   p.tangent = rotateInPlane(outgoing, mesh.faceNormal(sc.face), within).normalized();
@@ -190,7 +193,7 @@ int computeMatching(const SurfaceMesh& mesh, const CrossField& field, int f, int
 
 std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field, int v) {
   if (mesh.star(v).empty()) return {};
-  StarWalk w = walkStar(mesh, field, v);
+  StarChart w = computeStarChart(mesh, field, v);
   std::vector<PortEvent> events = cancelSpurious(portEvents(w), w.theta, w.loop);
   std::sort(events.begin(), events.end(), [](const PortEvent& a, const PortEvent& b) { return a.t < b.t; });
   if (!w.loop) {
@@ -223,7 +226,7 @@ FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
   out.starAngle.assign(mesh.numVertices(), 0);
   for (int v = 0; v < mesh.numVertices(); ++v) {
     if (mesh.star(v).empty()) continue;
-    StarWalk w = walkStar(mesh, field, v);
+    StarChart w = computeStarChart(mesh, field, v);
     out.starAngle[v] = w.theta;
     double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
     int quarters;

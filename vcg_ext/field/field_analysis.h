@@ -69,6 +69,26 @@ struct FieldAnalysis {
   std::vector<std::pair<std::string, int>> interiorHistogram() const;
 };
 
+/// The cut-open chart of the star of a vertex, with one field direction carried around it
+/// (see above). Star face k (mesh.star(v)[k]) covers chart angles [start[k], start[k+1]]; its
+/// outgoing edge lies at start[k]. The carried direction in face k is direction carried[k] of
+/// its cross, at chart angle psi[k]. Flattened angle = chart angle × flatScale.
+struct StarChart {
+  int vertex = -1;
+  std::vector<double> start;  ///< size n+1; start[n] = theta
+  std::vector<double> psi;    ///< size n
+  std::vector<int> carried;   ///< size n; carried[0] = 0
+  std::vector<double> delta;  ///< turn from face k to k+1 (n−1 entries; n for an interior vertex)
+  double theta = 0;           ///< total angle Θ
+  double flatScale = 1;       ///< 2π/Θ (interior) or π/Θ (border)
+  bool loop = false;          ///< interior vertex
+
+  /// Chart angle of a vector tangent to star face k.
+  double chartAngleOf(const SurfaceMesh& mesh, int k, const Vec3& direction) const;
+};
+
+StarChart computeStarChart(const SurfaceMesh& mesh, const CrossField& field, int v);
+
 /// Formats index×4 as a reduced fraction: -1 → "-1/4", 2 → "1/2", 4 → "1", 0 → "0".
 std::string formatQuarterIndex(int quarters);
 

@@ -1,0 +1,34 @@
+// The fcql subcommands. Each returns the process exit status; errors are thrown and reported
+// by main as one line.
+#pragma once
+
+#include "field/cross_field.h"
+#include "field/field_analysis.h"
+#include "mesh/surface_mesh.h"
+#include "stats_json.h"
+
+#include <string>
+
+namespace fcql {
+
+class CommandLine;
+
+/// What the input stage (mesh + cross field + analysis) produced.
+struct FieldStage {
+  std::string meshName;
+  SurfaceMesh mesh;
+  CrossField field;
+  FieldAnalysis analysis;
+  double seconds = 0;
+};
+
+/// Progress and information lines on stderr, silenced by --quiet.
+void progress(bool quiet, const std::string& line);
+
+/// Loads MESH (first positional) or builds --example NAME, then reads --field or computes a
+/// field (--sharp-angle), analyses it and records mesh.* field.* time_s.field in `stats`.
+FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet);
+
+int fieldCommand(int argc, char** argv);
+
+}  // namespace fcql

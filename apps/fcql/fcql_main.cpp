@@ -1,0 +1,45 @@
+// fcql: field-coherent quad layouts from the command line.
+#include "command_line.h"
+#include "commands.h"
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <new>
+
+namespace {
+
+const char* kUsage =
+    "usage: fcql COMMAND [options]\n"
+    "\n"
+    "commands:\n"
+    "  field MESH|--example NAME [--field F.ffield|F.rosy] [--sharp-angle DEG] --out DIR [--quiet]\n"
+    "        read or compute the cross field, find its singularities and separatrix ports;\n"
+    "        writes DIR/field.ffield and DIR/stats.json\n"
+    "\n"
+    "MESH is a triangle mesh in OBJ, PLY or OFF. Examples the tool generates itself:\n"
+    "  sphere, torus, double_torus, rounded_box, open_cylinder\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
+    std::cout << kUsage;
+    return argc < 2 ? 2 : 0;
+  }
+  std::string command = argv[1];
+  try {
+    if (command == "field") return fcql::fieldCommand(argc, argv);
+    std::cerr << "fcql: error: unknown command '" << command << "' (see fcql --help)\n";
+    return 2;
+  } catch (const fcql::UsageError& e) {
+    std::cerr << "fcql: error: " << e.what() << " (see fcql --help)\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "fcql: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "fcql: error: " << e.what() << "\n";
+    return 1;
+  }
+}
