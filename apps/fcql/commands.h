@@ -6,6 +6,9 @@
 #include "field/field_analysis.h"
 #include "mesh/surface_mesh.h"
 #include "stats_json.h"
+#include "tracing/separatrix_graph.h"
+
+#include <memory>
 
 #include <string>
 
@@ -29,6 +32,19 @@ void progress(bool quiet, const std::string& line);
 /// field (--sharp-angle), analyses it and records mesh.* field.* time_s.field in `stats`.
 FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet);
 
+/// What the tracing stage (graph G, searches, graph H) produced.
+struct TraceStage {
+  std::unique_ptr<GeodesicGraph> graph;
+  SeparatrixGraph h;
+  double graphSeconds = 0, tracingSeconds = 0;
+};
+
+/// Reads --alpha --k --phi --threads (validated, with the option named in errors).
+TracingParameters readTracingParameters(const CommandLine& cl);
+TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, StatsJson& stats, bool quiet);
+std::string candidatesObj(const SeparatrixGraph& h);
+
 int fieldCommand(int argc, char** argv);
+int traceCommand(int argc, char** argv);
 
 }  // namespace fcql

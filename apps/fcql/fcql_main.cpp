@@ -16,6 +16,9 @@ const char* kUsage =
     "  field MESH|--example NAME [--field F.ffield|F.rosy] [--sharp-angle DEG] --out DIR [--quiet]\n"
     "        read or compute the cross field, find its singularities and separatrix ports;\n"
     "        writes DIR/field.ffield and DIR/stats.json\n"
+    "  trace MESH|--example NAME [field options] [--alpha 20] [--k 10] [--phi 10] [--threads N] --out DIR\n"
+    "        build graph G, trace field-coherent separatrices from every port (Dijkstra, k sinks)\n"
+    "        and build graph H; writes DIR/candidates.obj, DIR/field.ffield and DIR/stats.json\n"
     "\n"
     "MESH is a triangle mesh in OBJ, PLY or OFF. Examples the tool generates itself:\n"
     "  sphere, torus, double_torus, rounded_box, open_cylinder\n";
@@ -30,6 +33,7 @@ int main(int argc, char** argv) {
   std::string command = argv[1];
   try {
     if (command == "field") return fcql::fieldCommand(argc, argv);
+    if (command == "trace") return fcql::traceCommand(argc, argv);
     std::cerr << "fcql: error: unknown command '" << command << "' (see fcql --help)\n";
     return 2;
   } catch (const fcql::UsageError& e) {

@@ -3,7 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include "field/cross_field.h"
+#include "mesh/surface_mesh.h"
+
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 
 namespace fcql::test {
@@ -13,6 +18,49 @@ inline std::string sharedMesh(const std::string& name) {
   std::string path = std::string(FCQL_SHARED_DIR) + "/data/meshes/" + name;
   std::ifstream probe(path);
   return probe ? path : std::string();
+}
+
+// A cube [-1,1]^3 with sharp edges, each side an n×n grid of split squares, welded, outward.
+inline SurfaceMesh sharpCube(int n) {
+  std::vector<Vec3> p;
+  std::vector<std::array<int, 3>> faces;
+  std::map<std::array<long, 3>, int> index;
+  auto vertexAt = [&](const Vec3& x) {
+    std::array<long, 3> key = {std::lround(x.x() * 1e6), std::lround(x.y() * 1e6), std::lround(x.z() * 1e6)};
+    auto it = index.find(key);
+    if (it != index.end()) return it->second;
+    p.push_back(x);
+    return index[key] = int(p.size()) - 1;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2) {
+      Vec3 normal = Vec3::Zero();
+      normal[axis] = side;
+      Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+      a[(axis + 1) % 3] = 1;
+      b[(axis + 2) % 3] = 1;
+      if (side < 0) std::swap(a, b);  // keep (a, b, normal) right-handed
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          auto at = [&](int ii, int jj) {
+            return vertexAt(normal + a * (-1 + 2.0 * ii / n) + b * (-1 + 2.0 * jj / n));
+          };
+          int v00 = at(i, j), v10 = at(i + 1, j), v11 = at(i + 1, j + 1), v01 = at(i, j + 1);
+          faces.push_back({v00, v10, v11});
+          faces.push_back({v00, v11, v01});
+        }
+    }
+  return SurfaceMesh(p, faces);
+}
+
+// Per face, the coordinate axis of lowest index that lies in the face plane.
+inline CrossField axisField(const SurfaceMesh& m) {
+  std::vector<Vec3> u(m.numFaces());
+  for (int f = 0; f < m.numFaces(); ++f) {
+    const Vec3& n = m.faceNormal(f);
+    u[f] = std::abs(n.x()) < 0.5 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  }
+  return CrossField::fromVectors(m, u);
 }
 
 }  // namespace fcql::test

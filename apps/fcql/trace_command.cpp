@@ -1,0 +1,84 @@
+#include "command_line.h"
+#include "commands.h"
+#include "output_dir.h"
+
+#include "field/field_io.h"
+#include "tracing/polyline_io.h"
+#include "tracing/separatrix_graph.h"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace fcql {
+
+TracingParameters readTracingParameters(const CommandLine& cl) {
+  TracingParameters p;
+  p.alpha = cl.number("alpha", p.alpha, 0.0, 1e6);
+  p.k = cl.integer("k", p.k, 1, 1000000);
+  p.phiDeg = cl.number("phi", p.phiDeg, 1.0, 45.0);
+  p.threads = cl.integer("threads", 0, 0, 1024);
+  return p;
+}
+
+TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, StatsJson& stats, bool quiet) {
+  TraceStage t;
+  auto start = std::chrono::steady_clock::now();
+  progress(quiet, "building graph G (phi " + std::to_string(params.phiDeg) + " deg)");
+  t.graph = std::make_unique<GeodesicGraph>(fs.mesh, fs.field, fs.analysis, params);
+  auto built = std::chrono::steady_clock::now();
+  progress(quiet, "graph G: " + std::to_string(t.graph->numNodes()) + " nodes, " + std::to_string(t.graph->numArcs()) +
+                      " arcs; tracing from " + std::to_string(t.graph->ports().size()) + " ports (k " +
+                      std::to_string(params.k) + ")");
+  t.h = traceCandidateSeparatrices(*t.graph);
+  auto traced = std::chrono::steady_clock::now();
+  t.graphSeconds = std::chrono::duration<double>(built - start).count();
+  t.tracingSeconds = std::chrono::duration<double>(traced - built).count();
+  progress(quiet, "graph H: " + std::to_string(t.h.arcs.size()) + " candidate separatrices, " +
+                      std::to_string(t.h.tangentialPairs.size()) + " tangential and " +
+                      std::to_string(t.h.orthogonalPairs.size()) + " orthogonal crossing pairs");
+  stats.set("params.alpha", params.alpha);
+  stats.set("params.k", params.k);
+  stats.set("params.phi", params.phiDeg);
+  stats.set("graph_g.nodes", t.graph->numNodes());
+  stats.set("graph_g.arcs", t.graph->numArcs());
+  stats.set("graph_g.auxiliary_points", t.graph->sampling().numSamples());
+  stats.set("graph_g.ports", int(t.graph->ports().size()));
+  stats.set("graph_h.arcs", int(t.h.arcs.size()));
+  stats.set("graph_h.tangential_pairs", int(t.h.tangentialPairs.size()));
+  stats.set("graph_h.orthogonal_pairs", int(t.h.orthogonalPairs.size()));
+  stats.set("time_s.graph", t.graphSeconds);
+  stats.set("time_s.tracing", t.tracingSeconds);
+  return t;
+}
+
+std::string candidatesObj(const SeparatrixGraph& h) {
+  std::vector<const TracedPath*> paths;
+  std::vector<std::string> comments;
+  for (std::size_t i = 0; i < h.arcs.size(); ++i) {
+    paths.push_back(&h.arcs[i].path);
+    comments.push_back("candidate " + std::to_string(i) + ": port " + std::to_string(h.arcs[i].portA) + " -> port " +
+                       std::to_string(h.arcs[i].portB) + ", length " + std::to_string(h.arcs[i].length));
+  }
+  return polylinesToObj(paths, comments);
+}
+
+int traceCommand(int argc, char** argv) {
+  CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads"}, {"quiet"});
+  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  bool quiet = cl.has("quiet");
+  TracingParameters params = readTracingParameters(cl);
+  StatsJson stats;
+  auto start = std::chrono::steady_clock::now();
+  FieldStage fs = runFieldStage(cl, stats, quiet);
+  TraceStage ts = runTraceStage(fs, params, stats, quiet);
+  stats.set("time_s.total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  OutputDir out(cl.value("out"));
+  saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
+  out.writeText("candidates.obj", candidatesObj(ts.h));
+  out.writeText("stats.json", stats.toString());
+  out.commit();
+  progress(quiet, "wrote " + out.finalPath("candidates.obj") + " and " + out.finalPath("stats.json"));
+  return 0;
+}
+
+}  // namespace fcql

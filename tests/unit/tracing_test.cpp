@@ -1,0 +1,147 @@
+#include "field/field_analysis.h"
+#include "field/field_io.h"
+#include "mesh/mesh_io.h"
+#include "test_support.h"
+#include "tracing/separatrix_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+using namespace fcql;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Traced {
+  SurfaceMesh mesh;
+  CrossField field;
+  FieldAnalysis analysis;
+  std::unique_ptr<GeodesicGraph> graph;
+  SeparatrixGraph h;
+};
+
+std::unique_ptr<Traced> trace(SurfaceMesh mesh, CrossField field, TracingParameters params) {
+  auto t = std::make_unique<Traced>();
+  t->mesh = std::move(mesh);
+  t->field = std::move(field);
+  t->analysis = analyzeField(t->mesh, t->field);
+  t->graph = std::make_unique<GeodesicGraph>(t->mesh, t->field, t->analysis, params);
+  t->h = traceCandidateSeparatrices(*t->graph);
+  return t;
+}
+
+/// Checks that a path is field-coherent: every segment lies in its triangle, within 45° of
+/// the direction it claims, and that direction is the one transported from the previous
+/// triangle. Returns the mean drift angle of its segments.
+double checkCoherent(const Traced& t, const TracedPath& p) {
+  EXPECT_EQ(p.points.size(), p.segments.size() + 1);
+  double drift = 0, total = 0;
+  for (std::size_t i = 0; i < p.segments.size(); ++i) {
+    const PathSegment& s = p.segments[i];
+    Vec3 w = p.points[i + 1].position - p.points[i].position;
+    Vec3 d = t.field.direction(t.mesh, s.face, s.direction);
+    EXPECT_LT(std::abs(t.mesh.faceNormal(s.face).dot(w)), 1e-9 * (1 + w.norm())) << "segment leaves its face";
+    double angle = std::acos(std::clamp(d.dot(w) / w.norm(), -1.0, 1.0));
+    EXPECT_LE(angle, kPi / 4 + 1e-9) << "segment " << i << " drifts more than 45 degrees";
+    drift += angle * w.norm();
+    total += w.norm();
+    if (i + 1 < p.segments.size()) {
+      const PathSegment& n = p.segments[i + 1];
+      int shared = -1;
+      for (int e = 0; e < 3; ++e)
+        if (t.mesh.adjacentFace(s.face, e) == n.face) shared = e;
+      EXPECT_GE(shared, 0) << "consecutive segments are not in adjacent faces";
+      if (shared < 0) return 0;
+      EXPECT_EQ(n.direction, (s.direction + t.analysis.matching[s.face][shared]) % 4) << "direction not transported";
+    }
+  }
+  return total > 0 ? drift / total : 0;
+}
+
+}  // namespace
+
+TEST(Tracing, ParametersAreValidated) {
+  TracingParameters p;
+  p.alpha = -1;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+  p = {};
+  p.k = 0;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+  p = {};
+  p.phiDeg = 0.5;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+  p.phiDeg = 46;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+}
+
+TEST(Tracing, ChordRelations) {
+  EXPECT_EQ(relateChords(0.5, 1.5, 1.2, 2.5), ChordRelation::Crossing);
+  EXPECT_EQ(relateChords(0.5, 1.5, 1.7, 2.5), ChordRelation::Disjoint);
+  EXPECT_EQ(relateChords(0.5, 1.5, 0.5, 2.5), ChordRelation::Touching);
+  EXPECT_EQ(relateChords(0.0, 1.5, 0.0, 2.5), ChordRelation::Disjoint);  // meet at a corner
+  EXPECT_EQ(relateChords(0.5, 1.5, 1.5, 0.5), ChordRelation::SameChord);
+  EXPECT_EQ(relateChords(2.5, 0.5, 0.2, 1.5), ChordRelation::Crossing);
+}
+
+TEST(Tracing, CubeCandidatesIncludeTheTwelveEdges) {
+  TracingParameters params;
+  params.k = 6;
+  auto t = trace(test::sharpCube(6), test::axisField(test::sharpCube(6)), params);
+  ASSERT_EQ(t->graph->ports().size(), 24u);
+  EXPECT_GT(t->graph->numNodes(), 0);
+  std::set<std::pair<int, int>> connected;
+  for (const auto& c : t->h.arcs) {
+    int va = t->graph->ports()[c.portA].vertex, vb = t->graph->ports()[c.portB].vertex;
+    connected.insert({std::min(va, vb), std::max(va, vb)});
+    EXPECT_EQ(c.path.points.front().kind, PathPoint::Vertex);
+    EXPECT_EQ(c.path.points.back().kind, PathPoint::Vertex);
+    checkCoherent(*t, c.path);
+  }
+  // Every pair of corners joined by a cube edge is connected by a candidate.
+  int edges = 0;
+  for (const auto& a : t->analysis.singularities)
+    for (const auto& b : t->analysis.singularities) {
+      if (a.vertex >= b.vertex) continue;
+      Vec3 d = t->mesh.position(a.vertex) - t->mesh.position(b.vertex);
+      if (std::abs(d.norm() - 2.0) > 1e-9) continue;  // not adjacent corners
+      ++edges;
+      EXPECT_TRUE(connected.count({a.vertex, b.vertex})) << "corners " << a.vertex << " and " << b.vertex;
+    }
+  EXPECT_EQ(edges, 12);
+}
+
+TEST(Tracing, SmallerPhiGivesMoreNodes) {
+  SurfaceMesh m = test::sharpCube(3);
+  CrossField f = test::axisField(m);
+  FieldAnalysis a = analyzeField(m, f);
+  TracingParameters coarse, fine;
+  coarse.phiDeg = 20;
+  fine.phiDeg = 5;
+  GeodesicGraph gc(m, f, a, coarse), gf(m, f, a, fine);
+  EXPECT_GT(gf.numNodes(), gc.numNodes());
+  EXPECT_GT(gf.numArcs(), gc.numArcs());
+}
+
+TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
+  FCQL_REQUIRE_SHARED(obj, "eight.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  TracingParameters one, two;
+  one.threads = 1;
+  two.threads = 2;
+  one.k = two.k = 5;
+  auto a = trace(m, f, one);
+  auto b = trace(m, f, two);
+  ASSERT_EQ(a->h.arcs.size(), b->h.arcs.size());
+  ASSERT_GT(a->h.arcs.size(), 20u);
+  for (std::size_t i = 0; i < a->h.arcs.size(); ++i) {
+    EXPECT_EQ(a->h.arcs[i].portA, b->h.arcs[i].portA);
+    EXPECT_EQ(a->h.arcs[i].portB, b->h.arcs[i].portB);
+    EXPECT_EQ(a->h.arcs[i].length, b->h.arcs[i].length);
+    checkCoherent(*a, a->h.arcs[i].path);
+  }
+  EXPECT_EQ(a->h.tangentialPairs, b->h.tangentialPairs);
+}

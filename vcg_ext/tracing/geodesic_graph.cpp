@@ -1,0 +1,297 @@
+#include "tracing/geodesic_graph.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+#include <unordered_map>
+
+namespace fcql {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const double kCos45 = std::cos(kPi / 4) - 1e-12;
+
+struct Arc {
+  int from;
+  int to;
+  float weight;
+};
+
+/// Eq. 1 of the paper for a move w whose field direction is d (unit).
+double anisotropicLength(const Vec3& w, const Vec3& d, double alpha) {
+  double len = w.norm();
+  if (len <= 0) return 0;
+  double c = std::clamp(d.dot(w) / len, -1.0, 1.0);
+  return len * (1.0 + alpha * std::acos(c) / (kPi / 4));
+}
+
+bool withinSector(const Vec3& w, const Vec3& d) {
+  double len = w.norm();
+  return len > 0 && d.dot(w) >= kCos45 * len;
+}
+
+int mod4(int x) { return ((x % 4) + 4) % 4; }
+
+/// What the builder needs to know about one singular vertex.
+struct SingularStar {
+  StarChart chart;
+  std::unordered_map<int, int> starIndexOfFace;
+  int seamShift = 0;  ///< direction index shift when the chart crosses its seam forward
+};
+
+}  // namespace
+
+void TracingParameters::validate() const {
+  if (!(alpha >= 0) || !std::isfinite(alpha))
+    throw std::invalid_argument("alpha must be a finite number >= 0");
+  if (k < 1) throw std::invalid_argument("k must be at least 1");
+  if (!(phiDeg >= 1 && phiDeg <= 45)) throw std::invalid_argument("phi must be between 1 and 45 degrees");
+  if (threads < 0) throw std::invalid_argument("threads must be >= 0");
+}
+
+class GeodesicGraphBuilder {
+public:
+  explicit GeodesicGraphBuilder(GeodesicGraph& g) : g_(g), mesh_(*g.mesh_), field_(*g.field_), analysis_(*g.analysis_) {}
+
+  void build() {
+    buildPorts();
+    const int numSlots = g_.portBase_ + 2 * int(g_.ports_.size());
+    int threads = g_.params_.threads > 0 ? g_.params_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::vector<Arc>> perThread(threads);
+    std::atomic<int> nextChunk{0};
+    const int chunk = 256;
+    auto work = [&](int t) {
+      auto& out = perThread[t];
+      for (;;) {
+        int begin = nextChunk.fetch_add(chunk);
+        if (begin >= mesh_.numFaces()) break;
+        int end = std::min(mesh_.numFaces(), begin + chunk);
+        for (int f = begin; f < end; ++f) faceArcs(f, out);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
+    std::vector<Arc> portArcs;
+    for (int p = 0; p < int(g_.ports_.size()); ++p) sourceArcs(p, portArcs);
+
+    // Counting sort into CSR; within a node, arcs keep a deterministic order (by target).
+    std::vector<std::int64_t>& begin = g_.arcBegin_;
+    begin.assign(numSlots + 1, 0);
+    auto count = [&](const std::vector<Arc>& arcs) { for (const Arc& a : arcs) ++begin[a.from + 1]; };
+    for (auto& v : perThread) count(v);
+    count(portArcs);
+    for (int i = 0; i < numSlots; ++i) begin[i + 1] += begin[i];
+    g_.arcTarget_.resize(begin[numSlots]);
+    g_.arcWeight_.resize(begin[numSlots]);
+    std::vector<std::int64_t> fill(begin.begin(), begin.end() - 1);
+    std::vector<char> live(numSlots, 0);
+    auto place = [&](std::vector<Arc>& arcs) {
+      for (const Arc& a : arcs) {
+        std::int64_t at = fill[a.from]++;
+        g_.arcTarget_[at] = a.to;
+        g_.arcWeight_[at] = a.weight;
+        live[a.from] = live[a.to] = 1;
+      }
+      std::vector<Arc>().swap(arcs);
+    };
+    for (auto& v : perThread) place(v);
+    place(portArcs);
+    for (int n = 0; n < numSlots; ++n) {
+      std::int64_t b = begin[n], e = begin[n + 1];
+      if (e - b < 2) continue;
+      std::vector<std::pair<int, float>> tmp;
+      for (std::int64_t a = b; a < e; ++a) tmp.emplace_back(g_.arcTarget_[a], g_.arcWeight_[a]);
+      std::sort(tmp.begin(), tmp.end());
+      for (std::int64_t a = b; a < e; ++a) g_.arcTarget_[a] = tmp[a - b].first, g_.arcWeight_[a] = tmp[a - b].second;
+    }
+    g_.numLiveNodes_ = std::count(live.begin(), live.end(), 1);
+  }
+
+private:
+  void buildPorts() {
+    const auto& sings = analysis_.singularities;
+    g_.firstPort_.assign(sings.size() + 1, 0);
+    stars_.resize(sings.size());
+    for (int s = 0; s < int(sings.size()); ++s) {
+      const SingularVertex& sv = sings[s];
+      g_.firstPort_[s] = int(g_.ports_.size());
+      singularityOfVertex_[sv.vertex] = s;
+      SingularStar& star = stars_[s];
+      star.chart = computeStarChart(mesh_, field_, sv.vertex);
+      const auto& corners = mesh_.star(sv.vertex);
+      for (int k = 0; k < int(corners.size()); ++k) star.starIndexOfFace[corners[k].face] = k;
+      if (star.chart.loop) {
+        const int n = int(corners.size());
+        double psiN = star.chart.psi[n - 1] + star.chart.delta[n - 1];
+        star.seamShift = mod4(int(std::lround((psiN - star.chart.theta - star.chart.psi[0]) / (kPi / 2))));
+      }
+      const int m = int(sv.ports.size());
+      const double full = star.chart.loop ? 2 * kPi : kPi;
+      for (int i = 0; i < m; ++i) {
+        PortNode pn;
+        pn.singularity = s;
+        pn.portIndex = i;
+        pn.vertex = sv.vertex;
+        pn.flatAngle = sv.ports[i].flatAngle;
+        if (star.chart.loop) {
+          // Neighbouring ports around the circle (the port itself, a full turn away, if alone).
+          double prev = i > 0 ? sv.ports[i - 1].flatAngle : sv.ports[m - 1].flatAngle - 2 * kPi;
+          double next = i + 1 < m ? sv.ports[i + 1].flatAngle : sv.ports[0].flatAngle + 2 * kPi;
+          pn.sectorLow = 0.5 * (prev + pn.flatAngle);
+          pn.sectorHigh = 0.5 * (pn.flatAngle + next);
+        } else {
+          pn.sectorLow = i == 0 ? 0.0 : 0.5 * (sv.ports[i - 1].flatAngle + pn.flatAngle);
+          pn.sectorHigh = i == m - 1 ? full : 0.5 * (pn.flatAngle + sv.ports[i + 1].flatAngle);
+        }
+        g_.ports_.push_back(pn);
+      }
+    }
+    g_.firstPort_[sings.size()] = int(g_.ports_.size());
+    g_.portBase_ = g_.sampling_.numSamples() * 8;
+  }
+
+  /// Flattened angle of point q around singular vertex of star s, seen in star face k,
+  /// unwrapped to lie nearest the angle `near`.
+  double flatAngle(int s, int k, const Vec3& q, double near) const {
+    const SingularStar& star = stars_[s];
+    double x = star.chart.chartAngleOf(mesh_, k, q - mesh_.position(analysis_.singularities[s].vertex)) *
+               star.chart.flatScale;
+    if (star.chart.loop) x += 2 * kPi * std::round((near - x) / (2 * kPi));
+    return x;
+  }
+
+  /// Direction index, in star face k, of port p's direction carried there inside p's sector;
+  /// `unwrapped` is the flattened angle of the destination (unwrapped around the port).
+  int carriedPortDirection(int p, int k, double unwrapped) const {
+    const PortNode& pn = g_.ports_[p];
+    const SingularStar& star = stars_[pn.singularity];
+    const Port& port = analysis_.singularities[pn.singularity].ports[pn.portIndex];
+    int kp = star.starIndexOfFace.at(port.face);
+    int relative = port.fieldDirection - star.chart.carried[kp];
+    int dir = star.chart.carried[k] + relative;
+    if (star.chart.loop) {
+      if (unwrapped >= 2 * kPi) dir += star.seamShift;
+      else if (unwrapped < 0) dir -= star.seamShift;
+    }
+    return mod4(dir);
+  }
+
+  /// The port of singularity s whose sector holds point q of star face k; −1 if none. Also
+  /// returns the unwrapped flattened angle.
+  int portAt(int s, int k, const Vec3& q, double* unwrapped) const {
+    for (int p = g_.firstPort_[s]; p < g_.firstPort_[s + 1]; ++p) {
+      const PortNode& pn = g_.ports_[p];
+      double x = flatAngle(s, k, q, pn.flatAngle);
+      if (x >= pn.sectorLow && x < pn.sectorHigh) {
+        *unwrapped = x;
+        return p;
+      }
+    }
+    return -1;
+  }
+
+  /// The node at sample q entering the face across local edge `i` of face f, direction dirInF
+  /// of f carried across; the border terminal if there is no face.
+  int nodeAcross(int f, int i, int q, int dirInF) const {
+    int g = mesh_.adjacentFace(f, i);
+    if (g < 0) return GeodesicGraph::edgeNode(q, 1, dirInF);
+    int e = mesh_.edgeId(f, i);
+    int dir = mod4(dirInF + analysis_.matching[f][i]);
+    return GeodesicGraph::edgeNode(q, g_.sampling_.sideOf(e, g), dir);
+  }
+
+  void faceArcs(int f, std::vector<Arc>& out) const {
+    const EdgeSampling& es = g_.sampling_;
+    const double alpha = g_.params_.alpha;
+    Vec3 dirs[4];
+    for (int j = 0; j < 4; ++j) dirs[j] = field_.direction(mesh_, f, j);
+    for (int a = 0; a < 3; ++a) {
+      int ea = mesh_.edgeId(f, a);
+      int sideA = es.sideOf(ea, f);
+      int opposite = mesh_.vertex(f, (a + 2) % 3);
+      auto sing = singularityOfVertex_.find(opposite);
+      for (int qa = es.firstSample[ea]; qa < es.firstSample[ea] + es.sampleCount[ea]; ++qa) {
+        const Vec3& from = es.samplePosition[qa];
+        for (int j = 0; j < 4; ++j) {
+          int node = GeodesicGraph::edgeNode(qa, sideA, j);
+          for (int b = 0; b < 3; ++b) {
+            if (b == a) continue;
+            int eb = mesh_.edgeId(f, b);
+            for (int qb = es.firstSample[eb]; qb < es.firstSample[eb] + es.sampleCount[eb]; ++qb) {
+              Vec3 w = es.samplePosition[qb] - from;
+              if (!withinSector(w, dirs[j])) continue;
+              out.push_back({node, nodeAcross(f, b, qb, j), float(anisotropicLength(w, dirs[j], alpha))});
+            }
+          }
+          // Sink of a port of the singular vertex opposite this edge.
+          if (sing == singularityOfVertex_.end()) continue;
+          Vec3 w = mesh_.position(opposite) - from;
+          if (!withinSector(w, dirs[j])) continue;
+          int s = sing->second;
+          int k = stars_[s].starIndexOfFace.at(f);
+          double unwrapped = 0;
+          int p = portAt(s, k, from, &unwrapped);
+          if (p < 0 || mod4(carriedPortDirection(p, k, unwrapped) + 2) != j) continue;
+          out.push_back({node, g_.sinkNode(p), float(anisotropicLength(w, dirs[j], alpha))});
+        }
+      }
+    }
+  }
+
+  void sourceArcs(int p, std::vector<Arc>& out) const {
+    const PortNode& pn = g_.ports_[p];
+    const int s = pn.singularity;
+    const Vec3& apex = mesh_.position(pn.vertex);
+    const auto& corners = mesh_.star(pn.vertex);
+    const EdgeSampling& es = g_.sampling_;
+    for (int k = 0; k < int(corners.size()); ++k) {
+      int f = corners[k].face;
+      int i = (corners[k].corner + 1) % 3;  // the edge opposite the vertex
+      int e = mesh_.edgeId(f, i);
+      for (int q = es.firstSample[e]; q < es.firstSample[e] + es.sampleCount[e]; ++q) {
+        const Vec3& to = es.samplePosition[q];
+        double x = flatAngle(s, k, to, pn.flatAngle);
+        if (!(x >= pn.sectorLow && x < pn.sectorHigh)) continue;
+        int dir = carriedPortDirection(p, k, x);
+        Vec3 d = field_.direction(mesh_, f, dir);
+        Vec3 w = to - apex;
+        if (!withinSector(w, d)) continue;
+        out.push_back({g_.sourceNode(p), nodeAcross(f, i, q, dir), float(anisotropicLength(w, d, g_.params_.alpha))});
+      }
+    }
+  }
+
+  GeodesicGraph& g_;
+  const SurfaceMesh& mesh_;
+  const CrossField& field_;
+  const FieldAnalysis& analysis_;
+  std::vector<SingularStar> stars_;
+  std::unordered_map<int, int> singularityOfVertex_;
+};
+
+GeodesicGraph::GeodesicGraph(const SurfaceMesh& mesh, const CrossField& field, const FieldAnalysis& analysis,
+                             const TracingParameters& params)
+    : mesh_(&mesh), field_(&field), analysis_(&analysis), params_(params) {
+  params_.validate();
+  if (field.numFaces() != mesh.numFaces() || int(analysis.matching.size()) != mesh.numFaces())
+    throw std::invalid_argument("the field or its analysis does not belong to this mesh");
+  sampling_ = sampleEdges(mesh, params_.phiDeg * kPi / 180.0);
+  GeodesicGraphBuilder(*this).build();
+}
+
+int GeodesicGraph::portAtFlatAngle(int singularity, double flat) const {
+  for (int p = firstPort_[singularity]; p < firstPort_[singularity + 1]; ++p) {
+    const PortNode& pn = ports_[p];
+    double x = flat;
+    if (mesh_->star(pn.vertex).empty() || !mesh_->isBorderVertex(pn.vertex))
+      x += 2 * kPi * std::round((pn.flatAngle - x) / (2 * kPi));
+    if (x >= pn.sectorLow && x < pn.sectorHigh) return p;
+  }
+  return -1;
+}
+
+}  // namespace fcql

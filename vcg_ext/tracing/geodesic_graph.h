@@ -1,0 +1,119 @@
+// Graph G of the paper (§3.2): field-coherent straight moves across triangles.
+//
+// Nodes
+//  - Edge nodes: one per auxiliary point s, incident triangle t and cross direction j of t,
+//    meaning "a path standing at s that continues into t following direction j". Numbered
+//    densely: edgeNode(sample, side, j) = (sample·2 + side)·4 + j, side = side of t w.r.t. the
+//    edge (see EdgeSampling). Directions whose ±45° sector is hidden behind the edge have no
+//    arcs (at most 3 per point per triangle are live).
+//  - Border terminals: slots (sample·2 + 1)·4 + j of a sample on a border edge (that side has
+//    no triangle): reaching one means the path hit the border there, following direction j of
+//    the triangle on side 0.
+//  - Port nodes: for port p (numbered over all singular vertices in FieldAnalysis order), one
+//    source node sourceNode(p) and one sink node sinkNode(p).
+// Arcs (stored in flat CSR arrays, targets and float weights)
+//  - From an edge node (s, t, j) to every auxiliary point s' on the two other edges of t whose
+//    direction s' − s lies within 45° of direction j of t (its sector); the target is the node
+//    of s' in the triangle t' across that edge, carrying the transported direction
+//    j' = j + matching(t, edge). Weight = Eq. 1: |w|(1 + α·Angle(d_j, w)/(π/4)).
+//  - From an edge node (s, t, j) to the sink of port p of the vertex v opposite s in t, when v
+//    lies in the sector of (s, t, j), s lies in the sector of p in the conformally flattened
+//    star of v, and j is p's direction carried to t, reversed (pointing at v).
+//  - From the source of port p of v to the auxiliary points on the edges opposite v whose
+//    flattened angle lies in p's sector and which lie within 45° of p's direction carried to
+//    that face.
+// Every directed chain of arcs is therefore field-coherent (paper §3.2).
+#pragma once
+
+#include "field/field_analysis.h"
+#include "tracing/edge_sampling.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace fcql {
+
+struct TracingParameters {
+  double alpha = 20.0;  ///< drift penalty of Eq. 1 (α ≥ 0)
+  int k = 10;           ///< sinks reached before a search stops (k ≥ 1)
+  double phiDeg = 10.0; ///< angular density of auxiliary points (1° ≤ φ ≤ 45°)
+  int threads = 0;      ///< 0: all hardware threads
+
+  /// Throws std::invalid_argument with a message naming the parameter and its valid range.
+  void validate() const;
+};
+
+/// A separatrix port as a node of G: the singular vertex, which port, and its sector in the
+/// flattened star.
+struct PortNode {
+  int singularity = -1;  ///< index in FieldAnalysis::singularities
+  int portIndex = -1;    ///< index in that singularity's ports
+  int vertex = -1;
+  double flatAngle = 0;  ///< from Port::flatAngle
+  double sectorLow = 0, sectorHigh = 0;  ///< flattened sector, unwrapped around flatAngle
+};
+
+class GeodesicGraph {
+public:
+  GeodesicGraph(const SurfaceMesh& mesh, const CrossField& field, const FieldAnalysis& analysis,
+                const TracingParameters& params);
+
+  const SurfaceMesh& mesh() const { return *mesh_; }
+  const CrossField& field() const { return *field_; }
+  const FieldAnalysis& analysis() const { return *analysis_; }
+  const EdgeSampling& sampling() const { return sampling_; }
+  const TracingParameters& parameters() const { return params_; }
+
+  static int edgeNode(int sample, int side, int dir) { return (sample * 2 + side) * 4 + dir; }
+  static int nodeSample(int node) { return node / 8; }
+  static int nodeSide(int node) { return (node / 4) % 2; }
+  static int nodeDirection(int node) { return node % 4; }
+  int sourceNode(int port) const { return portBase_ + 2 * port; }
+  int sinkNode(int port) const { return portBase_ + 2 * port + 1; }
+  bool isPortNode(int node) const { return node >= portBase_; }
+  int portOfNode(int node) const { return (node - portBase_) / 2; }
+  bool isSinkNode(int node) const { return isPortNode(node) && (node - portBase_) % 2 == 1; }
+  bool isBorderTerminal(int node) const {
+    return !isPortNode(node) && nodeSide(node) == 1 &&
+           sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][1] < 0;
+  }
+  /// Face an edge node continues into (−1 for a border terminal).
+  int nodeFace(int node) const {
+    return sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][nodeSide(node)];
+  }
+
+  int numNodeSlots() const { return int(arcBegin_.size()) - 1; }
+  const std::vector<PortNode>& ports() const { return ports_; }
+  /// Arcs leaving `node`: indices [arcBegin(node), arcBegin(node+1)).
+  std::int64_t arcBegin(int node) const { return arcBegin_[node]; }
+  int arcTarget(std::int64_t arc) const { return arcTarget_[arc]; }
+  float arcWeight(std::int64_t arc) const { return arcWeight_[arc]; }
+
+  /// |G|: nodes with at least one arc (in or out) and arcs.
+  long numNodes() const { return numLiveNodes_; }
+  long numArcs() const { return long(arcTarget_.size()); }
+
+  /// Index of the port whose flattened sector at singular vertex `singularity` contains the
+  /// flattened angle `flat`; −1 if none.
+  int portAtFlatAngle(int singularity, double flat) const;
+  /// First port index of each singularity (ports of singularity s are
+  /// [firstPort[s], firstPort[s+1])).
+  const std::vector<int>& firstPort() const { return firstPort_; }
+
+private:
+  const SurfaceMesh* mesh_;
+  const CrossField* field_;
+  const FieldAnalysis* analysis_;
+  TracingParameters params_;
+  EdgeSampling sampling_;
+  std::vector<PortNode> ports_;
+  std::vector<int> firstPort_;
+  int portBase_ = 0;
+  std::vector<std::int64_t> arcBegin_;
+  std::vector<int> arcTarget_;
+  std::vector<float> arcWeight_;
+  long numLiveNodes_ = 0;
+  friend class GeodesicGraphBuilder;
+};
+
+}  // namespace fcql

@@ -1,0 +1,42 @@
+// Graph H of the paper (§3.3): candidate separatrices between ports and how they cross.
+//
+// One node per port (a source identified with its sink); one arc per source-to-sink path
+// found by the searches, with the two opposite paths between the same pair of ports merged
+// (the shorter is kept). Two candidates that meet inside a triangle cross orthogonally or
+// tangentially, decided combinatorially from the direction classes they follow in that
+// triangle (paper Fig. 5): same direction up to a half turn = tangential.
+#pragma once
+
+#include "tracing/separatrix_tracer.h"
+
+#include <utility>
+#include <vector>
+
+namespace fcql {
+
+struct CandidateSeparatrix {
+  int portA = -1, portB = -1;  ///< portA = the source the kept path was traced from
+  double length = 0;           ///< anisotropic length γ
+  TracedPath path;
+};
+
+struct SeparatrixGraph {
+  std::vector<CandidateSeparatrix> arcs;
+  /// Pairs (i < j) of arcs that cross tangentially somewhere (they can't both be selected).
+  std::vector<std::pair<int, int>> tangentialPairs;
+  /// Pairs (i < j) of arcs that cross, always orthogonally.
+  std::vector<std::pair<int, int>> orthogonalPairs;
+  /// Per port: the arcs incident to it.
+  std::vector<std::vector<int>> arcsAtPort;
+};
+
+/// Builds H from the results of the searches (any order; the result does not depend on it).
+SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vector<std::vector<TracedPath>>& searches);
+
+/// Runs a search from every port (k sinks, no barriers) and builds H.
+SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph);
+
+/// Classifies every crossing between the arcs of `h` (fills tangentialPairs/orthogonalPairs).
+void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h);
+
+}  // namespace fcql

@@ -1,0 +1,317 @@
+#include "tracing/separatrix_tracer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <thread>
+
+namespace fcql {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kEps = 1e-9;
+
+int mod4(int x) { return ((x % 4) + 4) % 4; }
+
+double anisotropicLength(const Vec3& w, const Vec3& d, double alpha) {
+  double len = w.norm();
+  if (len <= 0) return 0;
+  double c = std::clamp(d.dot(w) / len, -1.0, 1.0);
+  return len * (1.0 + alpha * std::acos(c) / (kPi / 4));
+}
+
+/// Local index, in face f, of the edge carrying sample q.
+int localEdgeOfSample(const EdgeSampling& es, int q, int f) {
+  int e = es.sampleEdge[q];
+  return es.edgeFace[e][0] == f ? es.edgeLocal[e][0] : es.edgeLocal[e][1];
+}
+
+int cornerOf(const SurfaceMesh& mesh, int f, int v) {
+  for (int c = 0; c < 3; ++c)
+    if (mesh.vertex(f, c) == v) return c;
+  return -1;
+}
+
+/// The straight piece of a path that arc u → v of G stands for: face, direction, chord.
+PathSegment arcSegment(const GeodesicGraph& g, int u, int v) {
+  const SurfaceMesh& mesh = g.mesh();
+  const EdgeSampling& es = g.sampling();
+  PathSegment seg;
+  if (g.isPortNode(u)) {  // source arc: from the singular vertex to the sample of v
+    int q = GeodesicGraph::nodeSample(v);
+    int e = es.sampleEdge[q];
+    if (g.isBorderTerminal(v)) {
+      seg.face = es.edgeFace[e][0];
+      seg.direction = GeodesicGraph::nodeDirection(v);
+    } else {
+      int across = g.nodeFace(v);
+      seg.face = es.edgeFace[e][0] == across ? es.edgeFace[e][1] : es.edgeFace[e][0];
+      int i = localEdgeOfSample(es, q, seg.face);
+      seg.direction = mod4(GeodesicGraph::nodeDirection(v) - g.analysis().matching[seg.face][i]);
+    }
+    seg.from = cornerCoordinate(cornerOf(mesh, seg.face, g.ports()[g.portOfNode(u)].vertex));
+    seg.to = edgeCoordinate(localEdgeOfSample(es, q, seg.face), es.paramInFace(q, seg.face));
+    return seg;
+  }
+  int qa = GeodesicGraph::nodeSample(u);
+  seg.face = g.nodeFace(u);
+  seg.direction = GeodesicGraph::nodeDirection(u);
+  seg.from = edgeCoordinate(localEdgeOfSample(es, qa, seg.face), es.paramInFace(qa, seg.face));
+  if (g.isPortNode(v)) {
+    seg.to = cornerCoordinate(cornerOf(mesh, seg.face, g.ports()[g.portOfNode(v)].vertex));
+  } else {
+    int qb = GeodesicGraph::nodeSample(v);
+    seg.to = edgeCoordinate(localEdgeOfSample(es, qb, seg.face), es.paramInFace(qb, seg.face));
+  }
+  return seg;
+}
+
+Vec3 nodePosition(const GeodesicGraph& g, int node) {
+  if (g.isPortNode(node)) return g.mesh().position(g.ports()[g.portOfNode(node)].vertex);
+  return g.sampling().samplePosition[GeodesicGraph::nodeSample(node)];
+}
+
+PathPoint nodePoint(const GeodesicGraph& g, int node) {
+  PathPoint p;
+  if (g.isPortNode(node)) {
+    p.kind = PathPoint::Vertex;
+    p.id = g.ports()[g.portOfNode(node)].vertex;
+  } else {
+    p.kind = PathPoint::Sample;
+    p.id = GeodesicGraph::nodeSample(node);
+  }
+  p.position = nodePosition(g, node);
+  return p;
+}
+
+/// Intersection of segments [a, b] and [c, d] lying in one plane (closest point on [a, b]).
+Vec3 intersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  Vec3 r = b - a, s = d - c;
+  Vec3 n = r.cross(s);
+  double nn = n.squaredNorm();
+  if (nn < 1e-300) return 0.5 * (a + b);
+  double t = (c - a).cross(s).dot(n) / nn;
+  return a + r * std::clamp(t, 0.0, 1.0);
+}
+
+struct Terminal {
+  int pred;
+  int barrier;
+  Vec3 point;
+  PathSegment segment;
+};
+
+class Search {
+public:
+  explicit Search(const GeodesicGraph& g)
+      : g_(g), dist_(g.numNodeSlots(), std::numeric_limits<double>::infinity()), pred_(g.numNodeSlots(), -1),
+        settled_(g.numNodeSlots(), 0) {}
+
+  std::vector<TracedPath> run(int port, const SearchOptions& opt) {
+    reset();
+    std::vector<TracedPath> found;
+    terminals_.clear();
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+    const int source = g_.sourceNode(port);
+    setDist(source, 0, -1);
+    heap.push({0.0, source});
+    const BarrierSet* barriers = opt.barriers && !opt.barriers->empty() ? opt.barriers : nullptr;
+    const double alpha = g_.parameters().alpha;
+    int sinks = 0;
+    while (!heap.empty()) {
+      auto [d, u] = heap.top();
+      heap.pop();
+      if (u < 0) {  // a t-junction terminal: the path stops on a barrier
+        found.push_back(buildTerminalPath(port, terminals_[-1 - u], d));
+        break;
+      }
+      if (settled_[u]) continue;
+      settled_[u] = 1;
+      if (g_.isSinkNode(u)) {
+        int p = g_.portOfNode(u);
+        bool allowed = opt.sinkAllowed.empty() ? p != port : opt.sinkAllowed[p] != 0;
+        if (!allowed) continue;
+        found.push_back(buildPath(port, u, d, TracedPath::Sink));
+        found.back().sinkPort = p;
+        if (opt.tJunctionMode || ++sinks >= opt.maxSinks) break;
+        continue;
+      }
+      if (g_.isBorderTerminal(u)) {
+        if (opt.tJunctionMode) {
+          found.push_back(buildPath(port, u, d, TracedPath::Border));
+          break;
+        }
+        continue;
+      }
+      for (std::int64_t a = g_.arcBegin(u), e = g_.arcBegin(u + 1); a < e; ++a) {
+        int v = g_.arcTarget(a);
+        if (settled_[v]) continue;
+        if (!opt.tJunctionMode && g_.isBorderTerminal(v)) continue;  // paths reaching the border are dropped
+        double nd = d + g_.arcWeight(a);
+        if (barriers) {
+          PathSegment seg = arcSegment(g_, u, v);
+          const auto& chords = barriers->inFace(seg.face);
+          if (!chords.empty()) {
+            bool blocked = false;
+            int crossing = -1;
+            double crossingDistance = std::numeric_limits<double>::infinity();
+            Vec3 crossingPoint = Vec3::Zero();
+            Vec3 a0 = nodePosition(g_, u), a1 = nodePosition(g_, v);
+            for (const auto& c : chords) {
+              ChordRelation r = relateChords(seg.from, seg.to, c.from, c.to);
+              if (r == ChordRelation::Disjoint) continue;
+              if ((seg.direction - c.direction) % 2 == 0) {
+                blocked = true;  // tangential: never crossed
+                break;
+              }
+              if (!opt.tJunctionMode) continue;  // orthogonal crossings are allowed
+              Vec3 x = r == ChordRelation::Crossing ? intersect(a0, a1, c.a, c.b) : (r == ChordRelation::Touching ? touchingPoint(a0, a1, c) : a0);
+              double dx = (x - a0).norm();
+              if (dx < crossingDistance) crossingDistance = dx, crossing = c.id, crossingPoint = x;
+            }
+            if (blocked) continue;
+            if (crossing >= 0) {
+              Vec3 dir = g_.field().direction(g_.mesh(), seg.face, seg.direction);
+              double td = d + anisotropicLength(crossingPoint - a0, dir, alpha);
+              terminals_.push_back({u, crossing, crossingPoint, seg});
+              heap.push({td, -int(terminals_.size())});
+              continue;
+            }
+          }
+        }
+        if (nd < dist_[v]) {
+          setDist(v, nd, u);
+          heap.push({nd, v});
+        }
+      }
+    }
+    return found;
+  }
+
+private:
+  static Vec3 touchingPoint(const Vec3& a0, const Vec3& a1, const BarrierSet::Chord& c) {
+    // The shared endpoint: whichever of the chord's ends coincides with one of ours.
+    for (const Vec3* p : {&c.a, &c.b})
+      for (const Vec3* q : {&a0, &a1})
+        if ((*p - *q).norm() <= 1e-9 * (1 + p->norm())) return *p;
+    return a0;
+  }
+
+  void reset() {
+    for (int n : touched_) {
+      dist_[n] = std::numeric_limits<double>::infinity();
+      pred_[n] = -1;
+      settled_[n] = 0;
+    }
+    touched_.clear();
+  }
+
+  void setDist(int n, double d, int pred) {
+    if (std::isinf(dist_[n])) touched_.push_back(n);
+    dist_[n] = d;
+    pred_[n] = pred;
+  }
+
+  std::vector<int> chainTo(int end) const {
+    std::vector<int> nodes;
+    for (int n = end; n >= 0; n = pred_[n]) nodes.push_back(n);
+    std::reverse(nodes.begin(), nodes.end());
+    return nodes;
+  }
+
+  TracedPath buildPath(int port, int end, double length, TracedPath::End kind) const {
+    TracedPath path;
+    path.sourcePort = port;
+    path.end = kind;
+    path.length = length;
+    std::vector<int> nodes = chainTo(end);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      path.points.push_back(nodePoint(g_, nodes[i]));
+      if (i + 1 < nodes.size()) path.segments.push_back(arcSegment(g_, nodes[i], nodes[i + 1]));
+    }
+    return path;
+  }
+
+  TracedPath buildTerminalPath(int port, const Terminal& t, double length) const {
+    TracedPath path = buildPath(port, t.pred, length, TracedPath::Barrier);
+    path.barrier = t.barrier;
+    PathPoint p;
+    p.kind = PathPoint::Crossing;
+    p.id = t.barrier;
+    p.position = t.point;
+    path.points.push_back(p);
+    PathSegment seg = t.segment;
+    path.segments.push_back(seg);  // chord end is the sample beyond; the path stops at `point`
+    return path;
+  }
+
+  const GeodesicGraph& g_;
+  std::vector<double> dist_;
+  std::vector<int> pred_;
+  std::vector<char> settled_;
+  std::vector<int> touched_;
+  std::vector<Terminal> terminals_;
+};
+
+}  // namespace
+
+ChordRelation relateChords(double a1, double b1, double a2, double b2) {
+  auto same = [](double x, double y) {
+    double d = std::abs(x - y);
+    return d < kEps || std::abs(d - 3) < kEps;
+  };
+  auto isCorner = [](double x) { return std::abs(x - std::round(x)) < kEps; };
+  if ((same(a1, a2) && same(b1, b2)) || (same(a1, b2) && same(b1, a2))) return ChordRelation::SameChord;
+  for (double p : {a1, b1})
+    for (double q : {a2, b2})
+      if (same(p, q)) return isCorner(p) ? ChordRelation::Disjoint : ChordRelation::Touching;
+  auto along = [a1](double x) { return std::fmod(x - a1 + 6.0, 3.0); };
+  double end = along(b1);
+  auto inside = [&](double x) {
+    double t = along(x);
+    return t > 0 && t < end;
+  };
+  return inside(a2) != inside(b2) ? ChordRelation::Crossing : ChordRelation::Disjoint;
+}
+
+void BarrierSet::add(const TracedPath& path, int id) {
+  for (std::size_t i = 0; i < path.segments.size(); ++i) {
+    const PathSegment& s = path.segments[i];
+    if (s.face < 0 || s.face >= int(perFace_.size())) continue;
+    perFace_[s.face].push_back({s.from, s.to, s.direction, id, path.points[i].position, path.points[i + 1].position});
+  }
+  ++count_;
+}
+
+std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, const SearchOptions& options) {
+  Search search(graph);
+  return search.run(port, options);
+}
+
+std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
+                                                    const SearchOptions& options) {
+  std::vector<std::vector<TracedPath>> results(ports.size());
+  int threads = graph.parameters().threads > 0 ? graph.parameters().threads
+                                               : int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min<int>(threads, int(ports.size())));
+  std::atomic<std::size_t> next{0};
+  auto work = [&]() {
+    Search search(graph);
+    for (;;) {
+      std::size_t i = next.fetch_add(1);
+      if (i >= ports.size()) break;
+      results[i] = search.run(ports[i], options);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+  return results;
+}
+
+}  // namespace fcql

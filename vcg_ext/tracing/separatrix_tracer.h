@@ -1,0 +1,54 @@
+// Tracing field-coherent geodesic paths (paper §3.3): Dijkstra searches in graph G from the
+// source node of a port, stopping after k sinks are reached, with optional barriers (a set of
+// separatrices that may not be crossed tangentially) and a t-junction mode that stops at the
+// first orthogonal crossing of a barrier or at the border.
+#pragma once
+
+#include "tracing/geodesic_graph.h"
+#include "tracing/traced_path.h"
+
+#include <vector>
+
+namespace fcql {
+
+/// Separatrices that searches must respect, indexed per face for fast lookups.
+class BarrierSet {
+public:
+  explicit BarrierSet(int numFaces = 0) : perFace_(numFaces) {}
+  /// Adds every segment of `path` as a barrier with identifier `id`.
+  void add(const TracedPath& path, int id);
+  bool empty() const { return count_ == 0; }
+  int size() const { return count_; }
+
+  struct Chord {
+    double from, to;
+    int direction;
+    int id;
+    Vec3 a, b;  ///< endpoints
+  };
+  const std::vector<Chord>& inFace(int f) const { return perFace_[f]; }
+
+private:
+  std::vector<std::vector<Chord>> perFace_;
+  int count_ = 0;
+};
+
+struct SearchOptions {
+  int maxSinks = 10;                 ///< k
+  const BarrierSet* barriers = nullptr;
+  /// T-junction mode: the path ends at its first orthogonal crossing with a barrier, or at
+  /// the border, whichever is nearest; sinks allowed by `sinkAllowed` also end it.
+  bool tJunctionMode = false;
+  /// Per port: 1 if its sink may end a path. Empty: every port except the source's own.
+  std::vector<char> sinkAllowed;
+};
+
+/// All paths found by one search, in the order their ends were settled (shortest first).
+std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, const SearchOptions& options);
+
+/// Searches from each port in `ports`, in parallel (graph.parameters().threads); result i
+/// belongs to ports[i], identical whatever the number of threads.
+std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
+                                                    const SearchOptions& options);
+
+}  // namespace fcql
