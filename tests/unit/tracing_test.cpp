@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 #include <set>
 
 using namespace fcql;
@@ -144,4 +145,90 @@ TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
     checkCoherent(*a, a->h.arcs[i].path);
   }
   EXPECT_EQ(a->h.tangentialPairs, b->h.tangentialPairs);
+}
+
+namespace {
+
+/// True if any segment of `p` crosses or touches a segment of `q` in a shared face while
+/// following a parallel direction class.
+bool crossesTangentially(const TracedPath& p, const TracedPath& q) {
+  for (const auto& s : p.segments)
+    for (const auto& t : q.segments)
+      if (s.face == t.face && relateChords(s.from, s.to, t.from, t.to) != ChordRelation::Disjoint &&
+          (s.direction - t.direction) % 2 == 0)
+        return true;
+  return false;
+}
+
+double meanDrift(const Traced& t) {
+  double sum = 0;
+  for (const auto& c : t.h.arcs) sum += checkCoherent(t, c.path);
+  return t.h.arcs.empty() ? 0 : sum / t.h.arcs.size();
+}
+
+}  // namespace
+
+TEST(Tracing, LargerAlphaKeepsPathsCloserToTheField) {
+  FCQL_REQUIRE_SHARED(obj, "eight.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  TracingParameters loose, strict;
+  loose.alpha = 0;
+  strict.alpha = 30;
+  loose.k = strict.k = 4;
+  auto a = trace(m, f, loose);
+  auto b = trace(m, f, strict);
+  double driftLoose = meanDrift(*a), driftStrict = meanDrift(*b);
+  EXPECT_LT(driftStrict, driftLoose) << "alpha 30 drift " << driftStrict << " vs alpha 0 drift " << driftLoose;
+}
+
+TEST(Tracing, BarriersAreNeverCrossedTangentially) {
+  FCQL_REQUIRE_SHARED(obj, "eight.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  TracingParameters params;
+  params.k = 4;
+  auto t = trace(m, f, params);
+  ASSERT_FALSE(t->h.arcs.empty());
+  // The longest candidate makes the best obstacle.
+  std::size_t longest = 0;
+  for (std::size_t i = 0; i < t->h.arcs.size(); ++i)
+    if (t->h.arcs[i].path.segments.size() > t->h.arcs[longest].path.segments.size()) longest = i;
+  const TracedPath& barrier = t->h.arcs[longest].path;
+  // Without the barrier some candidate crosses it tangentially (else the test proves nothing).
+  int crossingBefore = 0;
+  for (const auto& c : t->h.arcs) crossingBefore += crossesTangentially(c.path, barrier) ? 1 : 0;
+  BarrierSet barriers(m.numFaces());
+  barriers.add(barrier, 0);
+  SearchOptions options;
+  options.maxSinks = params.k;
+  options.barriers = &barriers;
+  std::vector<int> ports(t->graph->ports().size());
+  std::iota(ports.begin(), ports.end(), 0);
+  auto results = traceFromPorts(*t->graph, ports, options);
+  int paths = 0;
+  for (const auto& r : results)
+    for (const auto& p : r) {
+      ++paths;
+      EXPECT_FALSE(crossesTangentially(p, barrier)) << "path from port " << p.sourcePort << " crosses the barrier";
+    }
+  EXPECT_GT(paths, 0);
+  EXPECT_GT(crossingBefore, 0) << "no candidate crossed the chosen barrier tangentially to begin with";
+
+  // T-junction mode: every search ends at the first orthogonal crossing, a sink or the border.
+  options.tJunctionMode = true;
+  auto stops = traceFromPorts(*t->graph, ports, options);
+  int onBarrier = 0;
+  for (const auto& r : stops) {
+    ASSERT_LE(r.size(), 1u);
+    for (const auto& p : r) {
+      EXPECT_FALSE(crossesTangentially(p, barrier));
+      if (p.end == TracedPath::Barrier) {
+        ++onBarrier;
+        EXPECT_EQ(p.barrier, 0);
+        EXPECT_EQ(p.points.back().kind, PathPoint::Crossing);
+      }
+    }
+  }
+  EXPECT_GT(onBarrier, 0);
 }
