@@ -1,0 +1,139 @@
+#include "layout/integer_program.h"
+
+#include <lpsolve/lp_lib.h>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace fcql {
+
+int IntegerProgram::addVariable(double lower, double upper, bool integer, double objective) {
+  if (!(lower <= upper)) throw std::invalid_argument("IntegerProgram: variable bounds are empty");
+  lower_.push_back(lower);
+  upper_.push_back(upper);
+  integer_.push_back(integer);
+  objective_.push_back(objective);
+  return int(lower_.size()) - 1;
+}
+
+void IntegerProgram::setObjective(int variable, double coefficient) { objective_.at(variable) = coefficient; }
+
+void IntegerProgram::addConstraint(const std::vector<std::pair<int, double>>& terms, Sense sense, double rhs) {
+  for (const auto& t : terms)
+    if (t.first < 0 || t.first >= numVariables()) throw std::out_of_range("IntegerProgram: constraint on an unknown variable");
+  rows_.push_back({terms, sense, rhs});
+}
+
+const char* toString(IntegerProgram::Status status) {
+  switch (status) {
+    case IntegerProgram::Status::Optimal: return "optimal";
+    case IntegerProgram::Status::TimeLimit: return "time limit reached, best solution found kept";
+    case IntegerProgram::Status::Infeasible: return "infeasible";
+    case IntegerProgram::Status::Unbounded: return "unbounded";
+    default: return "failed";
+  }
+}
+
+IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
+  Result result;
+  const int n = numVariables();
+  if (n == 0) {
+    result.status = Status::Optimal;
+    result.message = "empty program";
+    return result;
+  }
+  auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<lprec, void (*)(lprec*)> lp(make_lp(0, n), delete_lp);
+  if (!lp) {
+    result.message = "lp_solve could not create the model (out of memory?)";
+    return result;
+  }
+  set_verbose(lp.get(), NEUTRAL);
+  std::vector<double> row(n + 1, 0.0);
+  std::vector<int> cols;
+  std::vector<double> vals;
+  // Objective and bounds.
+  for (int j = 0; j < n; ++j) {
+    cols.push_back(j + 1);
+    vals.push_back(objective_[j]);
+  }
+  set_obj_fnex(lp.get(), n, vals.data(), cols.data());
+  if (maximize_) set_maxim(lp.get());
+  else set_minim(lp.get());
+  for (int j = 0; j < n; ++j) {
+    set_bounds(lp.get(), j + 1, std::isinf(lower_[j]) ? -get_infinite(lp.get()) : lower_[j],
+               std::isinf(upper_[j]) ? get_infinite(lp.get()) : upper_[j]);
+    if (integer_[j]) set_int(lp.get(), j + 1, TRUE);
+  }
+  set_add_rowmode(lp.get(), TRUE);
+  for (const Row& r : rows_) {
+    cols.clear();
+    vals.clear();
+    for (const auto& t : r.terms) {
+      cols.push_back(t.first + 1);
+      vals.push_back(t.second);
+    }
+    int type = r.sense == Sense::LessEqual ? LE : (r.sense == Sense::GreaterEqual ? GE : EQ);
+    if (!add_constraintex(lp.get(), int(cols.size()), vals.data(), cols.data(), type, r.rhs)) {
+      result.message = "lp_solve rejected a constraint";
+      return result;
+    }
+  }
+  set_add_rowmode(lp.get(), FALSE);
+  set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
+  set_presolve(lp.get(), PRESOLVE_NONE, get_presolveloops(lp.get()));
+  int ret = ::solve(lp.get());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  auto readSolution = [&]() {
+    result.values.assign(n, 0.0);
+    get_variables(lp.get(), result.values.data());
+    result.objective = get_objective(lp.get());
+  };
+  switch (ret) {
+    case OPTIMAL:
+    case PRESOLVED:
+      result.status = Status::Optimal;
+      readSolution();
+      // lp_solve may "solve" an unbounded model to its infinity (1e30).
+      if (std::abs(result.objective) >= 0.1 * get_infinite(lp.get())) {
+        result.status = Status::Unbounded;
+        result.values.clear();
+        result.message = "the integer program is unbounded";
+      }
+      break;
+    case SUBOPTIMAL:
+      result.status = Status::TimeLimit;
+      readSolution();
+      result.message = "lp_solve stopped before proving optimality; the best solution found is kept";
+      break;
+    case TIMEOUT:
+      // lp_solve reports TIMEOUT both with and without an improved solution.
+      if (get_solutioncount(lp.get()) > 0) {
+        result.status = Status::TimeLimit;
+        readSolution();
+        result.message = "lp_solve reached the time limit; the best solution found is kept";
+      } else {
+        result.status = Status::Failed;
+        result.message = "lp_solve reached the time limit before finding any solution";
+      }
+      break;
+    case INFEASIBLE:
+      result.status = Status::Infeasible;
+      result.message = "the integer program is infeasible";
+      break;
+    case UNBOUNDED:
+      result.status = Status::Unbounded;
+      result.message = "the integer program is unbounded";
+      break;
+    case NOMEMORY:
+      result.message = "lp_solve ran out of memory";
+      break;
+    default:
+      result.message = "lp_solve failed with code " + std::to_string(ret);
+  }
+  return result;
+}
+
+}  // namespace fcql

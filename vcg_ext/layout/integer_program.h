@@ -1,0 +1,59 @@
+// IntegerProgram: a small, self-contained front end to lp_solve 5.5 for the two integer
+// programs of the pipeline (separatrix selection, side lengths). Variables have bounds and may
+// be integer or binary; constraints are sparse rows with ≤, ≥ or =. lp_solve always runs with
+// a time limit; when it is hit the best feasible solution found so far is returned, flagged.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fcql {
+
+class IntegerProgram {
+public:
+  enum class Sense { LessEqual, GreaterEqual, Equal };
+  enum class Status {
+    Optimal,      ///< proven optimal
+    TimeLimit,    ///< time limit hit; `values` holds the best feasible solution found
+    Infeasible,   ///< no solution satisfies the constraints
+    Unbounded,
+    Failed        ///< lp_solve failed (message says why), or time limit with no solution
+  };
+  struct Result {
+    Status status = Status::Failed;
+    std::vector<double> values;
+    double objective = 0;
+    double seconds = 0;
+    std::string message;
+    bool hasSolution() const { return status == Status::Optimal || status == Status::TimeLimit; }
+  };
+
+  /// Adds a variable with bounds [lower, upper]; returns its index.
+  int addVariable(double lower, double upper, bool integer, double objective = 0);
+  int addBinary(double objective = 0) { return addVariable(0, 1, true, objective); }
+  void setObjective(int variable, double coefficient);
+  void addConstraint(const std::vector<std::pair<int, double>>& terms, Sense sense, double rhs);
+  void setMaximize(bool maximize) { maximize_ = maximize; }
+
+  int numVariables() const { return int(lower_.size()); }
+  int numConstraints() const { return int(rows_.size()); }
+
+  /// Solves with lp_solve. `timeLimitSeconds` ≥ 1 (lp_solve's resolution is one second).
+  Result solve(double timeLimitSeconds) const;
+
+private:
+  struct Row {
+    std::vector<std::pair<int, double>> terms;
+    Sense sense;
+    double rhs;
+  };
+  std::vector<double> lower_, upper_, objective_;
+  std::vector<char> integer_;
+  std::vector<Row> rows_;
+  bool maximize_ = false;
+};
+
+const char* toString(IntegerProgram::Status status);
+
+}  // namespace fcql

@@ -1,0 +1,28 @@
+// The relaxed 0-1 program of the paper (§4.1): choose candidate separatrices so that each
+// port has at most one (Eq. 2, Consistency), no two chosen ones cross tangentially (Eq. 3,
+// Orthogonality), maximising Σ c_i / γ(s_i) (Eq. 4).
+#pragma once
+
+#include "layout/integer_program.h"
+#include "tracing/separatrix_graph.h"
+
+#include <string>
+#include <vector>
+
+namespace fcql {
+
+struct SelectionResult {
+  std::vector<int> selected;  ///< indices into the SeparatrixGraph's arcs, increasing
+  IntegerProgram::Status status = IntegerProgram::Status::Optimal;
+  std::string message;        ///< lp_solve's word when not simply optimal
+  double seconds = 0;
+  int variables = 0, constraints = 0;
+};
+
+/// `portFree[p]` = 1 if port p may receive a separatrix (empty: all ports). Arcs touching a
+/// port that is not free are left out. Throws std::runtime_error with lp_solve's reason if no
+/// solution could be found (the empty selection is always feasible, so this means a solver
+/// failure).
+SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds);
+
+}  // namespace fcql
