@@ -4,7 +4,13 @@
 // frame) minimising a smoothness energy built with the discrete Levi-Civita connection across
 // edges, plus a soft alignment to the principal curvature directions weighted by their
 // anisotropy, with hard alignment of faces incident to sharp edges (dihedral angle above a
-// threshold) and to border edges. One sparse Hermitian solve (Eigen), then normalisation.
+// threshold) and to border edges. One sparse Hermitian solve (Eigen), a few normalising
+// refinement steps, then normalisation. See field_generation.cpp for the formulas.
+//
+// Sharp edges constrain the field only where they form feature lines: runs of sharp edges that
+// go on nearly straight for a few edges (or for a tenth of the bounding-box diagonal). Isolated
+// or zig-zagging sharp edges, the dihedral noise of scanned and coarse organic meshes, are
+// ignored. The result does not change when the mesh is scaled uniformly.
 #pragma once
 
 #include "field/cross_field.h"
@@ -17,12 +23,14 @@ struct FieldGenerationOptions {
   double sharpAngleDeg = 35.0;
   /// Align the field to border edges.
   bool alignToBorders = true;
-  /// Weight of the soft curvature alignment relative to smoothness (0 = smoothest field).
+  /// Weight λ of the soft curvature alignment relative to smoothness (0 = smoothest field).
+  /// Dimensionless; the built-in default is 200. Larger values follow the principal curvature
+  /// directions more closely at the price of more singularities.
   double curvatureWeight = -1;  ///< negative: the built-in default
 };
 
 struct FieldGenerationReport {
-  int sharpEdges = 0;        ///< number of edges detected as sharp
+  int sharpEdges = 0;        ///< number of sharp edges used as feature lines (constraints)
   int constrainedFaces = 0;  ///< faces with a hard alignment constraint
 };
 

@@ -133,7 +133,7 @@ public:
       settled_[u] = 1;
       if (g_.isSinkNode(u)) {
         int p = g_.portOfNode(u);
-        bool allowed = opt.sinkAllowed.empty() ? p != port : opt.sinkAllowed[p] != 0;
+        bool allowed = p != port && (opt.sinkAllowed.empty() || opt.sinkAllowed[p] != 0);
         if (!allowed) continue;
         found.push_back(buildPath(port, u, d, TracedPath::Sink));
         found.back().sinkPort = p;

@@ -39,7 +39,7 @@ struct SearchOptions {
   /// T-junction mode: the path ends at its first orthogonal crossing with a barrier, or at
   /// the border, whichever is nearest; sinks allowed by `sinkAllowed` also end it.
   bool tJunctionMode = false;
-  /// Per port: 1 if its sink may end a path. Empty: every port except the source's own.
+  /// Per port: 1 if its sink may end a path (empty: all). The source's own sink never does.
   std::vector<char> sinkAllowed;
 };
 

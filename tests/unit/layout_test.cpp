@@ -1,0 +1,96 @@
+#include "field/field_analysis.h"
+#include "field/field_io.h"
+#include "layout/patch_layout.h"
+#include "mesh/mesh_io.h"
+#include "test_support.h"
+#include "tracing/separatrix_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+using namespace fcql;
+
+namespace {
+
+struct Solved {
+  SurfaceMesh mesh;
+  CrossField field;
+  FieldAnalysis analysis;
+  std::unique_ptr<GeodesicGraph> graph;
+  SeparatrixGraph h;
+  Layout layout;
+  PatchLayout patches;
+};
+
+std::unique_ptr<Solved> solve(SurfaceMesh mesh, CrossField field, TracingParameters tp = {}, LayoutParameters lp = {}) {
+  auto s = std::make_unique<Solved>();
+  s->mesh = std::move(mesh);
+  s->field = std::move(field);
+  s->analysis = analyzeField(s->mesh, s->field);
+  s->graph = std::make_unique<GeodesicGraph>(s->mesh, s->field, s->analysis, tp);
+  s->h = traceCandidateSeparatrices(*s->graph);
+  s->layout = solveLayout(*s->graph, s->h, lp);
+  s->patches = buildPatchLayout(*s->graph, s->layout);
+  return s;
+}
+
+/// The properties every layout must have: at most one separatrix per port, no tangential
+/// crossing between any two separatrices.
+void checkLayoutInvariants(const Solved& s) {
+  std::map<int, int> perPort;
+  for (const auto& sep : s.layout.separatrices) {
+    if (sep.portA >= 0) ++perPort[sep.portA];
+    if (sep.portB >= 0) ++perPort[sep.portB];
+  }
+  for (const auto& pp : perPort) EXPECT_EQ(pp.second, 1) << "port " << pp.first;
+  const auto& seps = s.layout.separatrices;
+  for (std::size_t i = 0; i < seps.size(); ++i)
+    for (std::size_t j = i + 1; j < seps.size(); ++j)
+      for (const auto& a : seps[i].path.segments)
+        for (const auto& b : seps[j].path.segments)
+          if (a.face == b.face && relateChords(a.from, a.to, b.from, b.to) != ChordRelation::Disjoint)
+            EXPECT_NE((a.direction - b.direction) % 2, 0) << "separatrices " << i << " and " << j << " cross tangentially";
+}
+
+}  // namespace
+
+TEST(Layout, CubeGivesSixQuadPatches) {
+  SurfaceMesh m = test::sharpCube(6);
+  auto s = solve(m, test::axisField(m));
+  checkLayoutInvariants(*s);
+  EXPECT_EQ(s->layout.separatrices.size(), 12u);
+  EXPECT_EQ(s->layout.tJunctions, 0);
+  ASSERT_EQ(s->patches.numPatches(), 6);
+  for (const auto& p : s->patches.patches) {
+    EXPECT_TRUE(p.valid) << p.problem;
+    EXPECT_EQ(p.corners, 4);
+  }
+  int corners = 0;
+  for (char c : s->patches.corner) corners += c;
+  EXPECT_EQ(corners, 8);
+  // The refined mesh covers the same area.
+  double area = 0, refined = 0;
+  for (int f = 0; f < m.numFaces(); ++f) area += m.faceArea(f);
+  for (const auto& t : s->patches.triangles) {
+    const auto& P = s->patches.positions;
+    refined += 0.5 * (P[t[1]] - P[t[0]]).cross(P[t[2]] - P[t[0]]).norm();
+  }
+  EXPECT_NEAR(refined, area, 1e-9 * area);
+}
+
+TEST(Layout, EightPatchesAreQuadDisks) {
+  FCQL_REQUIRE_SHARED(obj, "eight.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  auto s = solve(m, f);
+  checkLayoutInvariants(*s);
+  EXPECT_GT(s->patches.numPatches(), 4);
+  std::string histogram;
+  for (const auto& h : s->patches.cornerHistogram()) histogram += std::to_string(h.first) + ":" + std::to_string(h.second) + " ";
+  std::cout << "eight: " << s->layout.separatrices.size() << " separatrices, " << s->patches.numPatches() << " patches, "
+            << s->layout.tJunctions << " t-junctions, " << s->layout.iterations << " iterations, corner histogram "
+            << histogram << ", invalid " << s->patches.numInvalidPatches() << std::endl;
+  for (const auto& p : s->patches.patches) EXPECT_TRUE(p.isDisk) << p.problem;
+  EXPECT_EQ(s->patches.numInvalidPatches(), 0);
+}

@@ -1,0 +1,389 @@
+// Smooth, curvature-aligned cross field generation. See field_generation.h.
+//
+// Unknown per face f: z_f = e^{4iθ_f}, θ_f the angle of the cross in the face frame (X_f, Y_f).
+//
+// Connection. Faces f and g share an edge; let a_f be the angle, in frame f, of the edge vector
+// of f (edge i of f, corner i → i+1) and a_g the angle, in frame g, of the edge vector of g (edge
+// j of g): the same edge run the other way. Unfolding g onto f about the edge preserves angles
+// measured from the edge, so a direction at angle θ in frame f is carried to θ − a_f + (a_g − π)
+// in frame g. For a 4-RoSy the π drops out (e^{−4iπ} = 1): z_g ≈ r z_f, r = e^{4i(a_g − a_f)}.
+//
+// Energy, one Hermitian quadratic form in the free z:
+//   E(z) = Σ_edges w_e |z_g − r z_f|²  +  λ Σ_f (A_f / A) |z_f − c_f|²
+// with w_e = |e|² / (A_f + A_g) (dimensionless), A the total area and c_f the curvature target:
+// c_f = e^{4iφ_f} · min(1, a_f / s), φ_f the direction of maximum curvature and a_f = (k1 − k2)/2
+// the anisotropy of the (slightly smoothed) shape operator, s a robust scale of the anisotropy
+// over the mesh (a high quantile, floored by 2 / bounding-box diagonal so that flat or umbilic
+// regions give no confident target). Faces along feature lines (sharp edges) and borders are
+// fixed to the edge direction, z = e^{4iβ}, and eliminated. The linear system is solved with a
+// complex sparse LDLᵀ.
+//
+// Refinement: the linear relaxation lets |z| shrink freely, which leaves spurious pairs of
+// singularities where the curvature data is noisy. A few MBO-style steps (implicit diffusion,
+// then normalisation: Viertel & Osting 2019) fix that: z ← argmin E(z) + μ Σ_f (A_f / A) |z_f −
+// ẑ_f/|ẑ_f||², with ẑ the previous iterate; the matrix is factorised once.
+//
+// Connected components with neither constraints nor curvature data (e.g. a perfect sphere with
+// λ = 0) get the smoothest field instead: the eigenvector of the smallest eigenvalue of the
+// connection Laplacian, by inverse iteration.
+//
+// Every term is invariant to a uniform scaling of the mesh, and the alignment and
+// normalisation terms are integrals over the surface, so the balance does not depend on the
+// resolution either.
+#include "field/field_generation.h"
+
+#include "field/curvature.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numeric>
+
+namespace fcql {
+namespace {
+
+using Complex = std::complex<double>;
+using SparseMatrixC = Eigen::SparseMatrix<Complex>;
+constexpr double kPi = 3.14159265358979323846;
+
+/// Default of FieldGenerationOptions::curvatureWeight (λ above).
+constexpr double kDefaultCurvatureWeight = 200.0;
+/// Jacobi smoothing steps applied to the shape operators before taking their directions.
+constexpr int kTensorSmoothingSteps = 4;
+/// The anisotropy scale s is this area-weighted quantile of the per-face anisotropy...
+constexpr double kAnisotropyQuantile = 0.95;
+/// ...but at least this many times 1 / (bounding-box diagonal).
+constexpr double kAnisotropyFloor = 2.0;
+/// MBO refinement: weight μ of the normalisation term and number of steps.
+constexpr double kNormalisationWeight = 100.0;
+constexpr int kNormalisationSteps = 20;
+/// Feature lines: a chain of sharp edges goes on through a vertex where exactly two sharp edges
+/// meet with a turn below this angle; chains with fewer than kMinFeatureEdges edges are ignored
+/// unless they are longer than kMinFeatureLength × the bounding-box diagonal (coarse meshes).
+constexpr double kMaxFeatureTurnDeg = 30.0;
+constexpr int kMinFeatureEdges = 4;
+constexpr double kMinFeatureLength = 0.1;
+
+double angleInFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
+  return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
+}
+
+void checkSharpAngle(double deg) {
+  if (!std::isfinite(deg) || deg < 0 || deg > 180)
+    throw FieldError("the sharp edge angle must be between 0 and 180 degrees (got " + std::to_string(deg) + ")");
+}
+
+/// Connected components of the faces through interior edges.
+std::vector<int> faceComponents(const SurfaceMesh& mesh, int* count) {
+  std::vector<int> comp(mesh.numFaces(), -1);
+  std::vector<int> stack;
+  int n = 0;
+  for (int s = 0; s < mesh.numFaces(); ++s) {
+    if (comp[s] >= 0) continue;
+    comp[s] = n;
+    stack.push_back(s);
+    while (!stack.empty()) {
+      int f = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        int g = mesh.adjacentFace(f, i);
+        if (g >= 0 && comp[g] < 0) {
+          comp[g] = n;
+          stack.push_back(g);
+        }
+      }
+    }
+    ++n;
+  }
+  *count = n;
+  return comp;
+}
+
+/// Area-weighted quantile q of non-negative values.
+double weightedQuantile(const std::vector<double>& values, const std::vector<double>& weights, double q) {
+  std::vector<int> order(values.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return values[a] < values[b]; });
+  double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  double acc = 0;
+  for (int k : order) {
+    acc += weights[k];
+    if (acc >= q * total) return values[k];
+  }
+  return order.empty() ? 0.0 : values[order.back()];
+}
+
+/// Curvature targets c_f (see the top of the file).
+std::vector<Complex> curvatureTargets(const SurfaceMesh& mesh, const std::vector<char>& creases) {
+  const int nf = mesh.numFaces();
+  std::vector<FaceTensor> tensors =
+      smoothFaceTensors(mesh, faceShapeOperators(mesh, &creases), kTensorSmoothingSteps, 0.5, &creases);
+  std::vector<double> anisotropy(nf), area(nf);
+  for (int f = 0; f < nf; ++f) {
+    anisotropy[f] = tensors[f].anisotropy();
+    area[f] = mesh.faceArea(f);
+  }
+  double scale = std::max(weightedQuantile(anisotropy, area, kAnisotropyQuantile),
+                          kAnisotropyFloor / mesh.boundingBoxDiagonal());
+  std::vector<Complex> c(nf, 0.0);
+  for (int f = 0; f < nf; ++f) {
+    Complex w = tensors[f].tracelessPart();
+    double a = std::abs(w);
+    if (!(a > 0) || !std::isfinite(a)) continue;
+    c[f] = std::min(1.0, a / scale) * (w * w) / (a * a);
+  }
+  return c;
+}
+
+/// Sharp edges that form feature lines (see kMaxFeatureTurnDeg): short or zig-zagging runs
+/// of sharp edges, as dihedral noise on scanned or coarse organic meshes makes, are dropped.
+std::vector<char> featureEdges(const SurfaceMesh& mesh, const std::vector<char>& sharp) {
+  const int nv = mesh.numVertices();
+  const double maxTurn = kMaxFeatureTurnDeg * kPi / 180.0;
+  const double minLength = kMinFeatureLength * mesh.boundingBoxDiagonal();
+  std::vector<std::array<int, 2>> ends(mesh.numEdges(), {-1, -1});
+  std::vector<std::vector<int>> incident(nv);
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      int e = mesh.edgeId(f, i);
+      if (!sharp[e] || ends[e][0] >= 0) continue;
+      ends[e] = {mesh.vertex(f, i), mesh.vertex(f, (i + 1) % 3)};
+      incident[ends[e][0]].push_back(e);
+      incident[ends[e][1]].push_back(e);
+    }
+  auto other = [&](int e, int v) { return ends[e][0] == v ? ends[e][1] : ends[e][0]; };
+  std::vector<char> through(nv, 0);
+  for (int v = 0; v < nv; ++v) {
+    if (incident[v].size() != 2) continue;
+    Vec3 a = mesh.position(v) - mesh.position(other(incident[v][0], v));
+    Vec3 b = mesh.position(other(incident[v][1], v)) - mesh.position(v);
+    through[v] = std::atan2(a.cross(b).norm(), a.dot(b)) <= maxTurn;
+  }
+  std::vector<char> keep(mesh.numEdges(), 0), seen(mesh.numEdges(), 0);
+  std::vector<int> chain;
+  for (int e0 = 0; e0 < mesh.numEdges(); ++e0) {
+    if (!sharp[e0] || seen[e0]) continue;
+    chain.assign(1, e0);
+    seen[e0] = 1;
+    for (int side = 0; side < 2; ++side) {
+      int e = e0, v = ends[e0][side];
+      while (through[v]) {
+        int next = incident[v][0] == e ? incident[v][1] : incident[v][0];
+        if (seen[next]) break;  // went round a closed loop
+        seen[next] = 1;
+        chain.push_back(next);
+        e = next;
+        v = other(e, v);
+      }
+    }
+    double length = 0;
+    for (int e : chain) length += (mesh.position(ends[e][1]) - mesh.position(ends[e][0])).norm();
+    if (int(chain.size()) >= kMinFeatureEdges || length >= minLength)
+      for (int e : chain) keep[e] = 1;
+  }
+  return keep;
+}
+
+/// Appends the smoothness term Σ w_e |z_g − r z_f|² over edges with at least one free face:
+/// matrix entries for free-free pairs, right-hand side terms for a free face next to a fixed one.
+void addSmoothness(const SurfaceMesh& mesh, const std::vector<int>& unknown, const std::vector<Complex>& z,
+                   std::vector<Eigen::Triplet<Complex>>& triplets, Eigen::VectorXcd& rhs) {
+  for (int f = 0; f < mesh.numFaces(); ++f) {
+    int a = unknown[f];
+    if (a < 0) continue;
+    for (int i = 0; i < 3; ++i) {
+      int g = mesh.adjacentFace(f, i);
+      if (g < 0) continue;
+      int b = unknown[g];
+      if (b >= 0 && g < f) continue;  // free-free edges once, from the lower face
+      int j = mesh.adjacentEdge(f, i);
+      double af = angleInFrame(mesh, f, mesh.edgeVector(f, i));
+      double ag = angleInFrame(mesh, g, mesh.edgeVector(g, j));
+      Complex r = std::polar(1.0, 4 * (ag - af));  // z_g ≈ r z_f
+      double w = mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g));
+      // w |z_g − r z_f|² = w |z_f|² + w |z_g|² − 2w Re(conj(z_g) r z_f)
+      triplets.emplace_back(a, a, w);
+      if (b >= 0) {
+        triplets.emplace_back(b, b, w);
+        triplets.emplace_back(b, a, -w * r);
+        triplets.emplace_back(a, b, -w * std::conj(r));
+      } else {
+        rhs[a] += w * std::conj(r) * z[g];
+      }
+    }
+  }
+}
+
+SparseMatrixC fromTriplets(int n, const std::vector<Eigen::Triplet<Complex>>& triplets) {
+  SparseMatrixC m(n, n);
+  m.setFromTriplets(triplets.begin(), triplets.end());
+  return m;
+}
+
+void factorise(Eigen::SimplicialLDLT<SparseMatrixC>& solver, const SparseMatrixC& m) {
+  solver.compute(m);
+  if (solver.info() != Eigen::Success)
+    throw FieldError("cross field generation failed: the field system could not be factorised");
+}
+
+/// Solves for the free faces; z holds the fixed values on entry and every value on return.
+void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, int n, double lambda,
+                    const std::vector<char>& creases, std::vector<Complex>& z) {
+  const int nf = mesh.numFaces();
+  double totalArea = 0;
+  for (int f = 0; f < nf; ++f) totalArea += mesh.faceArea(f);
+  // areaWeight[a] = A_f / A of the free face f with unknown a.
+  Eigen::VectorXd areaWeight(n);
+  for (int f = 0; f < nf; ++f)
+    if (unknown[f] >= 0) areaWeight[unknown[f]] = mesh.faceArea(f) / totalArea;
+
+  std::vector<Eigen::Triplet<Complex>> smooth;
+  smooth.reserve(std::size_t(n) * 7);
+  Eigen::VectorXcd fixedRhs = Eigen::VectorXcd::Zero(n);
+  addSmoothness(mesh, unknown, z, smooth, fixedRhs);
+  double meanDiagonal = 0;
+  for (const auto& t : smooth)
+    if (t.row() == t.col()) meanDiagonal += std::real(t.value());
+  meanDiagonal = std::max(meanDiagonal / n, 1e-300);
+
+  // E(z) with the curvature term, plus a tiny regularisation that keeps the matrix definite
+  // when nothing anchors a component.
+  std::vector<Complex> target = lambda > 0 ? curvatureTargets(mesh, creases) : std::vector<Complex>(nf, 0.0);
+  std::vector<Eigen::Triplet<Complex>> full = smooth;
+  Eigen::VectorXcd rhs = fixedRhs;
+  for (int f = 0; f < nf; ++f) {
+    int a = unknown[f];
+    if (a < 0) continue;
+    double w = lambda * areaWeight[a];
+    full.emplace_back(a, a, w + 1e-12 * meanDiagonal);
+    rhs[a] += w * target[f];
+  }
+  SparseMatrixC system = fromTriplets(n, full);
+  Eigen::SimplicialLDLT<SparseMatrixC> solver;
+  factorise(solver, system);
+  Eigen::VectorXcd x = solver.solve(rhs);
+  if (!x.allFinite()) throw FieldError("cross field generation failed: the solution is not finite");
+
+  // Components where the solution vanishes: no constraint and no curvature data.
+  int numComponents = 0;
+  std::vector<int> comp = faceComponents(mesh, &numComponents);
+  std::vector<double> norm2(numComponents, 0), weight(numComponents, 0);
+  std::vector<char> anchored(numComponents, 0);
+  for (int f = 0; f < nf; ++f) {
+    if (unknown[f] < 0) {
+      anchored[comp[f]] = 1;
+      continue;
+    }
+    norm2[comp[f]] += areaWeight[unknown[f]] * std::norm(x[unknown[f]]);
+    weight[comp[f]] += areaWeight[unknown[f]];
+  }
+  std::vector<char> degenerate(numComponents, 0);
+  bool anyDegenerate = false;
+  for (int c = 0; c < numComponents; ++c)
+    if (!anchored[c] && weight[c] > 0 && !(norm2[c] > 1e-12 * weight[c])) degenerate[c] = anyDegenerate = true;
+  if (anyDegenerate) {
+    // Smallest eigenvector of the smoothness term (shifted slightly to stay definite), by
+    // inverse iteration; the other components are zero in the iterate and stay so.
+    std::vector<Eigen::Triplet<Complex>> shifted = smooth;
+    for (int a = 0; a < n; ++a) shifted.emplace_back(a, a, 1e-6 * meanDiagonal * areaWeight[a] * n);
+    Eigen::SimplicialLDLT<SparseMatrixC> inverse;
+    factorise(inverse, fromTriplets(n, shifted));
+    Eigen::VectorXcd v = Eigen::VectorXcd::Zero(n);
+    for (int f = 0; f < nf; ++f)
+      if (unknown[f] >= 0 && degenerate[comp[f]]) v[unknown[f]] = 1.0;
+    for (int it = 0; it < 40; ++it) {
+      Eigen::VectorXcd next = inverse.solve((areaWeight.cast<Complex>().array() * v.array()).matrix());
+      double norm = next.norm();
+      if (!(norm > 0) || !next.allFinite()) break;
+      v = next / norm;
+    }
+    for (int f = 0; f < nf; ++f)
+      if (unknown[f] >= 0 && degenerate[comp[f]]) x[unknown[f]] = v[unknown[f]];
+  }
+
+  // MBO refinement: diffuse towards the normalised previous iterate.
+  Eigen::VectorXd mu = kNormalisationWeight * areaWeight;
+  SparseMatrixC refined = system;
+  for (int a = 0; a < n; ++a) refined.coeffRef(a, a) += mu[a];
+  factorise(solver, refined);
+  for (int step = 0; step < kNormalisationSteps; ++step) {
+    Eigen::VectorXcd r = rhs;
+    for (int a = 0; a < n; ++a) {
+      double len = std::abs(x[a]);
+      if (len > 0) r[a] += mu[a] * x[a] / len;
+    }
+    Eigen::VectorXcd next = solver.solve(r);
+    if (!next.allFinite()) break;
+    x = next;
+  }
+  for (int f = 0; f < nf; ++f)
+    if (unknown[f] >= 0) z[f] = x[unknown[f]];
+}
+
+}  // namespace
+
+std::vector<char> detectSharpEdges(const SurfaceMesh& mesh, double sharpAngleDeg) {
+  checkSharpAngle(sharpAngleDeg);
+  std::vector<char> sharp(mesh.numEdges(), 0);
+  const double threshold = sharpAngleDeg * kPi / 180.0;
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      int g = mesh.adjacentFace(f, i);
+      if (g < f) continue;  // a border edge, or seen from the other face
+      const Vec3& a = mesh.faceNormal(f);
+      const Vec3& b = mesh.faceNormal(g);
+      if (std::atan2(a.cross(b).norm(), a.dot(b)) > threshold) sharp[mesh.edgeId(f, i)] = 1;
+    }
+  return sharp;
+}
+
+CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOptions& options,
+                              FieldGenerationReport* report) {
+  checkSharpAngle(options.sharpAngleDeg);
+  if (!std::isfinite(options.curvatureWeight))
+    throw FieldError("the curvature weight must be a finite number (negative: the default)");
+  const int nf = mesh.numFaces();
+  const double lambda = options.curvatureWeight < 0 ? kDefaultCurvatureWeight : options.curvatureWeight;
+
+  // Hard constraints: each face with a feature or border edge follows its longest such edge.
+  std::vector<char> feature = featureEdges(mesh, detectSharpEdges(mesh, options.sharpAngleDeg));
+  std::vector<Complex> z(nf, 0.0);
+  std::vector<int> unknown(nf, -1);
+  int n = 0, numFixed = 0;
+  for (int f = 0; f < nf; ++f) {
+    int best = -1;
+    double bestLength = -1;
+    for (int i = 0; i < 3; ++i) {
+      bool constrained = mesh.isBorderEdge(f, i) ? options.alignToBorders : feature[mesh.edgeId(f, i)] != 0;
+      double len = mesh.edgeVector(f, i).norm();
+      if (constrained && len > bestLength) {
+        bestLength = len;
+        best = i;
+      }
+    }
+    if (best >= 0) {
+      z[f] = std::polar(1.0, 4 * angleInFrame(mesh, f, mesh.edgeVector(f, best)));
+      ++numFixed;
+    } else {
+      unknown[f] = n++;
+    }
+  }
+  if (report) {
+    report->sharpEdges = int(std::count(feature.begin(), feature.end(), 1));
+    report->constrainedFaces = numFixed;
+  }
+  if (n > 0) solveFreeFaces(mesh, unknown, n, lambda, feature, z);
+
+  CrossField field;
+  field.u.resize(nf);
+  for (int f = 0; f < nf; ++f) {
+    double theta = std::abs(z[f]) > 0 ? std::arg(z[f]) / 4 : 0.0;
+    field.u[f] = std::cos(theta) * mesh.faceFrameX(f) + std::sin(theta) * mesh.faceFrameY(f);
+  }
+  return field;
+}
+
+}  // namespace fcql

@@ -1,0 +1,171 @@
+#include "layout/layout_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace fcql {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+BarrierSet barriersOf(const GeodesicGraph& graph, const Layout& layout) {
+  BarrierSet b(graph.mesh().numFaces());
+  for (int i = 0; i < int(layout.separatrices.size()); ++i) b.add(layout.separatrices[i].path, i);
+  return b;
+}
+
+/// True if two paths meet anywhere inside a shared triangle (cross, touch or overlap).
+bool pathsMeet(const TracedPath& p, const TracedPath& q) {
+  for (const auto& s : p.segments)
+    for (const auto& t : q.segments)
+      if (s.face == t.face && relateChords(s.from, s.to, t.from, t.to) != ChordRelation::Disjoint) return true;
+  return false;
+}
+
+void noteSelection(Layout& layout, const SelectionResult& r) {
+  layout.ilpSeconds += r.seconds;
+  layout.iterations += 1;
+  if (r.status == IntegerProgram::Status::TimeLimit) {
+    layout.ilpTimeLimitHit = true;
+    layout.messages.push_back("0-1 program " + std::to_string(layout.iterations) + ": " + r.message);
+  }
+}
+
+}  // namespace
+
+void LayoutParameters::validate() const {
+  if (!(ilpTimeLimit >= 1) || !std::isfinite(ilpTimeLimit))
+    throw std::invalid_argument("ilp_time_limit must be at least 1 second");
+  if (maxIterations < 1) throw std::invalid_argument("the solving cycle needs at least one iteration");
+}
+
+std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
+  std::vector<char> used(graph.ports().size(), 0);
+  for (const auto& s : layout.separatrices) {
+    if (s.portA >= 0) used[s.portA] = 1;
+    if (s.portB >= 0) used[s.portB] = 1;
+  }
+  return used;
+}
+
+Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params) {
+  params.validate();
+  Layout layout;
+  const int numPorts = int(graph.ports().size());
+
+  // 1. The first 0-1 program on all candidates.
+  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit);
+  noteSelection(layout, first);
+  for (int a : first.selected) {
+    const auto& c = candidates.arcs[a];
+    layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, 1, c.path});
+  }
+  layout.selectedFromCandidates = int(first.selected.size());
+
+  // 2. The solving cycle.
+  for (int iteration = 2; iteration <= params.maxIterations; ++iteration) {
+    std::vector<char> used = usedPorts(graph, layout);
+    std::vector<int> dangling;
+    std::vector<char> free(numPorts, 0);
+    for (int p = 0; p < numPorts; ++p)
+      if (!used[p]) dangling.push_back(p), free[p] = 1;
+    if (dangling.size() < 2) break;  // a separatrix needs two free ports
+    auto start = Clock::now();
+    BarrierSet barriers = barriersOf(graph, layout);
+    SearchOptions options;
+    options.maxSinks = graph.parameters().k;
+    options.barriers = &barriers;
+    options.sinkAllowed = free;
+    auto searches = traceFromPorts(graph, dangling, options);
+    // A port's own sink is never a target.
+    for (std::size_t i = 0; i < searches.size(); ++i)
+      searches[i].erase(std::remove_if(searches[i].begin(), searches[i].end(),
+                                       [&](const TracedPath& p) { return p.sinkPort == dangling[i]; }),
+                        searches[i].end());
+    SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
+    layout.cycleTracingSeconds += since(start);
+    if (more.arcs.empty()) break;
+    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit);
+    noteSelection(layout, r);
+    if (r.selected.empty()) break;
+    for (int a : r.selected) {
+      const auto& c = more.arcs[a];
+      layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, iteration, c.path});
+    }
+  }
+  {
+    std::vector<char> used = usedPorts(graph, layout);
+    layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
+  }
+  if (!params.propagate) return layout;
+
+  // 3. Propagation from the ports still dangling.
+  auto start = Clock::now();
+  std::vector<char> failed(numPorts, 0);
+  for (;;) {
+    std::vector<char> used = usedPorts(graph, layout);
+    std::vector<int> dangling;
+    std::vector<char> free(numPorts, 0);
+    for (int p = 0; p < numPorts; ++p)
+      if (!used[p] && !failed[p]) dangling.push_back(p);
+    for (int p = 0; p < numPorts; ++p) free[p] = !used[p];
+    if (dangling.empty()) break;
+    BarrierSet barriers = barriersOf(graph, layout);
+    SearchOptions options;
+    options.maxSinks = 1;
+    options.barriers = &barriers;
+    options.tJunctionMode = true;
+    options.sinkAllowed = free;
+    auto results = traceFromPorts(graph, dangling, options);
+    std::vector<const TracedPath*> found;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      // The own sink is excluded by sinkAllowed only if the port is not free: drop it here.
+      const TracedPath* best = nullptr;
+      for (const auto& p : results[i])
+        if (p.sinkPort != dangling[i]) best = &p;
+      if (best) found.push_back(best);
+      else failed[dangling[i]] = 1;
+    }
+    std::sort(found.begin(), found.end(), [](const TracedPath* a, const TracedPath* b) {
+      return a->length != b->length ? a->length < b->length : a->sourcePort < b->sourcePort;
+    });
+    std::vector<const TracedPath*> accepted;
+    std::vector<char> takenThisRound(numPorts, 0);
+    for (const TracedPath* p : found) {
+      if (takenThisRound[p->sourcePort]) continue;
+      if (p->end == TracedPath::Sink && takenThisRound[p->sinkPort]) continue;
+      bool meets = false;
+      for (const TracedPath* q : accepted) meets = meets || pathsMeet(*p, *q);
+      if (meets) continue;
+      accepted.push_back(p);
+      takenThisRound[p->sourcePort] = 1;
+      LayoutSeparatrix s;
+      s.portA = p->sourcePort;
+      s.path = *p;
+      s.iteration = 0;
+      if (p->end == TracedPath::Sink) {
+        s.kind = LayoutSeparatrix::Full;
+        s.portB = p->sinkPort;
+        takenThisRound[p->sinkPort] = 1;
+      } else if (p->end == TracedPath::Barrier) {
+        s.kind = LayoutSeparatrix::TJunction;
+        ++layout.tJunctions;
+      } else {
+        s.kind = LayoutSeparatrix::Border;
+        ++layout.borderConnections;
+      }
+      layout.separatrices.push_back(std::move(s));
+    }
+    if (accepted.empty()) break;
+  }
+  for (int p = 0; p < numPorts; ++p)
+    if (failed[p]) layout.unresolvedPorts.push_back(p);
+  layout.propagationSeconds = since(start);
+  return layout;
+}
+
+}  // namespace fcql

@@ -1,0 +1,57 @@
+// The solving cycle of the paper (§4.2) and the propagation of dangling ports into
+// t-junctions and border connections (§4.2 end, §4.3).
+//
+// 1. Select separatrices from the candidates H with the relaxed 0-1 program.
+// 2. Solving cycle: freeze the selection as barriers, search again from the dangling ports
+//    (sinks only at dangling ports), select among the new candidates, add; repeat until
+//    nothing new is added.
+// 3. Propagation: from every port still dangling, trace until the first orthogonal crossing
+//    with the layout (a t-junction), the border, or another dangling port. Paths are accepted
+//    shortest first in rounds; a path that meets another path accepted in the same round is
+//    traced again in the next round against the grown layout.
+#pragma once
+
+#include "layout/separatrix_selection.h"
+#include "tracing/separatrix_graph.h"
+
+#include <string>
+#include <vector>
+
+namespace fcql {
+
+struct LayoutParameters {
+  double ilpTimeLimit = 60;  ///< seconds per 0-1 program (≥ 1)
+  int maxIterations = 20;    ///< bound on the solving cycle
+  bool propagate = true;     ///< step 3
+
+  /// Throws std::invalid_argument naming the parameter.
+  void validate() const;
+};
+
+struct LayoutSeparatrix {
+  enum Kind { Full, TJunction, Border };
+  Kind kind = Full;
+  int portA = -1, portB = -1;  ///< portB is −1 for t-junction and border paths
+  int iteration = 0;           ///< 1 = first program, 2.. = solving cycle, 0 = propagation
+  TracedPath path;
+};
+
+struct Layout {
+  std::vector<LayoutSeparatrix> separatrices;
+  int iterations = 0;             ///< 0-1 programs solved (first + cycle)
+  int selectedFromCandidates = 0; ///< separatrices chosen in the first program
+  int danglingAfterCycle = 0;     ///< ports without a separatrix after the solving cycle
+  int tJunctions = 0;
+  int borderConnections = 0;
+  std::vector<int> unresolvedPorts;  ///< dangling ports no propagation could resolve
+  bool ilpTimeLimitHit = false;
+  std::vector<std::string> messages; ///< solver notes worth logging
+  double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0;
+};
+
+Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params);
+
+/// Ports that have a separatrix in `layout` (per port, 1 = used).
+std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout);
+
+}  // namespace fcql

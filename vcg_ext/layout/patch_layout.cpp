@@ -1,0 +1,395 @@
+#include "layout/patch_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace fcql {
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+struct FacePoint {
+  int global;
+  Vec2 xy;
+};
+
+struct Chord {
+  int a, b;   ///< local point indices
+  int curve;  ///< separatrix index
+};
+
+/// Builds the arrangement of one triangle and appends its triangles.
+class FaceArrangement {
+public:
+  FaceArrangement(const SurfaceMesh& mesh, int f, std::vector<Vec3>& positions)
+      : mesh_(mesh), f_(f), positions_(positions) {
+    origin_ = mesh.position(mesh.vertex(f, 0));
+    x_ = mesh.faceFrameX(f);
+    y_ = mesh.faceFrameY(f);
+    double longest = 0;
+    for (int i = 0; i < 3; ++i) longest = std::max(longest, mesh.edgeVector(f, i).norm());
+    eps_ = 1e-9 * longest;
+    for (int c = 0; c < 3; ++c) addPoint(mesh.vertex(f, c), mesh.position(mesh.vertex(f, c)));
+  }
+
+  Vec2 to2d(const Vec3& p) const { return Vec2((p - origin_).dot(x_), (p - origin_).dot(y_)); }
+
+  /// Adds (or finds) a point with a known global id.
+  int addPoint(int global, const Vec3& p) {
+    for (int i = 0; i < int(points_.size()); ++i)
+      if (points_[i].global == global) return i;
+    points_.push_back({global, to2d(p)});
+    return int(points_.size()) - 1;
+  }
+
+  /// Adds a point without a global id yet (an interior point), snapping to an existing one.
+  int addInteriorPoint(const Vec2& xy) {
+    for (int i = 0; i < int(points_.size()); ++i)
+      if ((points_[i].xy - xy).norm() <= 1e3 * eps_) return i;
+    Vec3 p = origin_ + x_ * xy.x() + y_ * xy.y();
+    positions_.push_back(p);
+    points_.push_back({int(positions_.size()) - 1, xy});
+    return int(points_.size()) - 1;
+  }
+  int addInteriorPoint3d(const Vec3& p) { return addInteriorPoint(to2d(p)); }
+
+  void addChord(int a, int b, int curve) {
+    if (a != b) chords_.push_back({a, b, curve});
+  }
+
+  /// Triangulates the arrangement; appends triangles with per-edge curve ids.
+  void triangulate(std::vector<std::array<int, 3>>& tris, std::vector<std::array<int, 3>>& curves,
+                   std::vector<int>& originalFace) {
+    intersectChords();
+    // Undirected edges with their curve: chord pieces and boundary pieces.
+    std::map<std::pair<int, int>, int> edges;
+    auto addEdge = [&](int a, int b, int curve) {
+      if (a == b) return;
+      auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = edges.find(key);
+      if (it == edges.end() || it->second < 0) edges[key] = std::max(curve, it == edges.end() ? curve : it->second);
+    };
+    for (const Chord& c : chords_) {
+      auto on = pointsOnSegment(c.a, c.b);
+      for (std::size_t i = 0; i + 1 < on.size(); ++i) addEdge(on[i], on[i + 1], c.curve);
+    }
+    for (int i = 0; i < 3; ++i) {
+      int curve = mesh_.isBorderEdge(f_, i) ? -2 : -1;
+      auto on = pointsOnSegment(i, (i + 1) % 3);
+      for (std::size_t k = 0; k + 1 < on.size(); ++k) addEdge(on[k], on[k + 1], curve);
+    }
+    // Faces of the planar graph, traced with the face on the left.
+    const int n = int(points_.size());
+    std::vector<std::vector<int>> around(n);
+    for (const auto& e : edges) {
+      around[e.first.first].push_back(e.first.second);
+      around[e.first.second].push_back(e.first.first);
+    }
+    for (int v = 0; v < n; ++v) {
+      auto& nb = around[v];
+      std::sort(nb.begin(), nb.end(), [&](int a, int b) {
+        Vec2 da = points_[a].xy - points_[v].xy, db = points_[b].xy - points_[v].xy;
+        return std::atan2(da.y(), da.x()) < std::atan2(db.y(), db.x());
+      });
+    }
+    std::map<std::pair<int, int>, char> used;
+    for (const auto& e : edges)
+      for (int dir = 0; dir < 2; ++dir) {
+        int u = dir ? e.first.second : e.first.first, v = dir ? e.first.first : e.first.second;
+        if (used[{u, v}]) continue;
+        std::vector<int> cycle;
+        int a = u, b = v;
+        for (int guard = 0; guard < 4 * n + 8; ++guard) {
+          used[{a, b}] = 1;
+          cycle.push_back(a);
+          const auto& nb = around[b];
+          int at = int(std::find(nb.begin(), nb.end(), a) - nb.begin());
+          int w = nb[(at + int(nb.size()) - 1) % int(nb.size())];  // next clockwise from a
+          a = b;
+          b = w;
+          if (a == u && b == v) break;
+        }
+        double area = 0;
+        for (std::size_t i = 0; i < cycle.size(); ++i)
+          area += cross2(points_[cycle[i]].xy, points_[cycle[(i + 1) % cycle.size()]].xy);
+        if (area <= 0) continue;  // the outer face
+        earClip(cycle, edges, tris, curves, originalFace);
+      }
+  }
+
+private:
+  /// Local indices of the points on segment [a, b], sorted from a to b.
+  std::vector<int> pointsOnSegment(int a, int b) const {
+    const Vec2 pa = points_[a].xy, pb = points_[b].xy;
+    Vec2 d = pb - pa;
+    double len2 = d.squaredNorm();
+    std::vector<std::pair<double, int>> on = {{0.0, a}, {1.0, b}};
+    for (int i = 0; i < int(points_.size()); ++i) {
+      if (i == a || i == b) continue;
+      Vec2 w = points_[i].xy - pa;
+      double t = w.dot(d) / len2;
+      if (t <= 0 || t >= 1) continue;
+      if (std::abs(cross2(d, w)) / std::sqrt(len2) > 1e3 * eps_) continue;
+      on.push_back({t, i});
+    }
+    std::sort(on.begin(), on.end());
+    std::vector<int> out;
+    for (const auto& p : on) out.push_back(p.second);
+    return out;
+  }
+
+  void intersectChords() {
+    for (std::size_t i = 0; i < chords_.size(); ++i)
+      for (std::size_t j = i + 1; j < chords_.size(); ++j) {
+        const Chord& c = chords_[i];
+        const Chord& d = chords_[j];
+        if (c.a == d.a || c.a == d.b || c.b == d.a || c.b == d.b) continue;
+        Vec2 p = points_[c.a].xy, r = points_[c.b].xy - p;
+        Vec2 q = points_[d.a].xy, s = points_[d.b].xy - q;
+        double denom = cross2(r, s);
+        if (std::abs(denom) < 1e-14 * r.norm() * s.norm()) continue;  // parallel
+        double t = cross2(q - p, s) / denom, u = cross2(q - p, r) / denom;
+        if (t <= 0 || t >= 1 || u <= 0 || u >= 1) continue;
+        addInteriorPoint(p + r * t);
+      }
+  }
+
+  void earClip(std::vector<int> poly, const std::map<std::pair<int, int>, int>& edges,
+               std::vector<std::array<int, 3>>& tris, std::vector<std::array<int, 3>>& curves,
+               std::vector<int>& originalFace) {
+    auto curveOf = [&](int a, int b) {
+      auto it = edges.find({std::min(a, b), std::max(a, b)});
+      return it == edges.end() ? -1 : it->second;
+    };
+    double scale = 0;
+    for (int i : poly) scale = std::max(scale, points_[i].xy.norm());
+    double minArea = 1e-14 * (scale * scale + 1e-300);
+    while (poly.size() >= 3) {
+      const int m = int(poly.size());
+      int best = -1;
+      double bestArea = 0;
+      for (int i = 0; i < m; ++i) {
+        int a = poly[(i + m - 1) % m], b = poly[i], c = poly[(i + 1) % m];
+        double area = cross2(points_[b].xy - points_[a].xy, points_[c].xy - points_[a].xy);
+        if (area <= minArea) continue;
+        bool empty = true;
+        for (int k = 0; k < m && empty; ++k) {
+          int p = poly[k];
+          if (p == a || p == b || p == c) continue;
+          const Vec2& x = points_[p].xy;
+          double w0 = cross2(points_[b].xy - points_[a].xy, x - points_[a].xy);
+          double w1 = cross2(points_[c].xy - points_[b].xy, x - points_[b].xy);
+          double w2 = cross2(points_[a].xy - points_[c].xy, x - points_[c].xy);
+          if (w0 >= -minArea && w1 >= -minArea && w2 >= -minArea) empty = false;
+        }
+        // Prefer the fattest ear: keeps the triangles away from slivers.
+        if (empty && area > bestArea) best = i, bestArea = area;
+      }
+      if (best < 0) break;
+      int a = poly[(best + m - 1) % m], b = poly[best], c = poly[(best + 1) % m];
+      tris.push_back({points_[a].global, points_[b].global, points_[c].global});
+      curves.push_back({curveOf(a, b), curveOf(b, c), -1});  // c→a is inside unless it is a polygon edge
+      if (poly.size() == 3) curves.back()[2] = curveOf(c, a);
+      originalFace.push_back(f_);
+      poly.erase(poly.begin() + best);
+    }
+  }
+
+  const SurfaceMesh& mesh_;
+  int f_;
+  std::vector<Vec3>& positions_;
+  Vec3 origin_, x_, y_;
+  double eps_;
+  std::vector<FacePoint> points_;
+  std::vector<Chord> chords_;
+};
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+std::uint64_t key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+
+}  // namespace
+
+int PatchLayout::numInvalidPatches() const {
+  return int(std::count_if(patches.begin(), patches.end(), [](const PatchReport& p) { return !p.valid; }));
+}
+
+std::vector<std::pair<int, int>> PatchLayout::cornerHistogram() const {
+  std::map<int, int> h;
+  for (const auto& p : patches)
+    if (p.isDisk) ++h[p.corners];
+  return {h.begin(), h.end()};
+}
+
+PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
+  const SurfaceMesh& mesh = graph.mesh();
+  const EdgeSampling& es = graph.sampling();
+  PatchLayout out;
+  out.numOriginalVertices = mesh.numVertices();
+  out.positions = mesh.positions();
+
+  // Global ids of the auxiliary points the separatrices pass through.
+  std::unordered_map<int, int> sampleVertex;
+  std::vector<std::vector<int>> samplesOfEdge(mesh.numEdges());
+  for (const auto& s : layout.separatrices)
+    for (const auto& p : s.path.points)
+      if (p.kind == PathPoint::Sample && !sampleVertex.count(p.id)) {
+        sampleVertex[p.id] = int(out.positions.size());
+        out.positions.push_back(es.samplePosition[p.id]);
+        samplesOfEdge[es.sampleEdge[p.id]].push_back(p.id);
+      }
+  // Chords per face.
+  struct FaceChord {
+    int curve;
+    PathPoint a, b;
+  };
+  std::vector<std::vector<FaceChord>> chordsOfFace(mesh.numFaces());
+  for (int s = 0; s < int(layout.separatrices.size()); ++s) {
+    const TracedPath& path = layout.separatrices[s].path;
+    for (std::size_t i = 0; i < path.segments.size(); ++i)
+      chordsOfFace[path.segments[i].face].push_back({s, path.points[i], path.points[i + 1]});
+  }
+  for (int f = 0; f < mesh.numFaces(); ++f) {
+    bool touched = !chordsOfFace[f].empty();
+    for (int i = 0; i < 3 && !touched; ++i) touched = !samplesOfEdge[mesh.edgeId(f, i)].empty();
+    if (!touched) {
+      out.triangles.push_back(mesh.face(f));
+      out.edgeCurve.push_back({mesh.isBorderEdge(f, 0) ? -2 : -1, mesh.isBorderEdge(f, 1) ? -2 : -1,
+                               mesh.isBorderEdge(f, 2) ? -2 : -1});
+      out.originalFace.push_back(f);
+      continue;
+    }
+    FaceArrangement arr(mesh, f, out.positions);
+    for (int i = 0; i < 3; ++i)
+      for (int q : samplesOfEdge[mesh.edgeId(f, i)]) arr.addPoint(sampleVertex[q], es.samplePosition[q]);
+    auto local = [&](const PathPoint& p) {
+      if (p.kind == PathPoint::Vertex) return arr.addPoint(p.id, mesh.position(p.id));
+      if (p.kind == PathPoint::Sample) return arr.addPoint(sampleVertex[p.id], es.samplePosition[p.id]);
+      return arr.addInteriorPoint3d(p.position);
+    };
+    for (const auto& c : chordsOfFace[f]) {
+      int a = local(c.a), b = local(c.b);
+      arr.addChord(a, b, c.curve);
+    }
+    arr.triangulate(out.triangles, out.edgeCurve, out.originalFace);
+  }
+
+  // Patches: components across edges that are not on a separatrix or the border.
+  const int nt = int(out.triangles.size());
+  std::unordered_map<std::uint64_t, int> halfEdge;  // (a, b) -> t*3+i
+  halfEdge.reserve(std::size_t(nt) * 3);
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) halfEdge[key(out.triangles[t][i], out.triangles[t][(i + 1) % 3])] = t * 3 + i;
+  // A separatrix edge is a separatrix edge from both sides.
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      if (out.edgeCurve[t][i] < 0) continue;
+      auto it = halfEdge.find(key(out.triangles[t][(i + 1) % 3], out.triangles[t][i]));
+      if (it != halfEdge.end()) out.edgeCurve[it->second / 3][it->second % 3] = out.edgeCurve[t][i];
+    }
+  UnionFind uf(nt);
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      if (out.edgeCurve[t][i] != -1) continue;
+      auto it = halfEdge.find(key(out.triangles[t][(i + 1) % 3], out.triangles[t][i]));
+      if (it != halfEdge.end()) uf.unite(t, it->second / 3);
+    }
+  std::unordered_map<int, int> patchOfRoot;
+  out.patch.resize(nt);
+  for (int t = 0; t < nt; ++t) {
+    auto ins = patchOfRoot.emplace(uf.find(t), int(patchOfRoot.size()));
+    out.patch[t] = ins.first->second;
+  }
+  const int np = int(patchOfRoot.size());
+  out.patches.assign(np, {});
+
+  // Vertices that are corners whenever a patch boundary passes through them.
+  const auto& index = graph.analysis().vertexIndexQuarters;
+  auto alwaysCorner = [&](int v) { return v < mesh.numVertices() && index[v] != 0; };
+
+  // Walk boundary loops. From boundary half-edge (a→b) in triangle t, rotate about b through
+  // the patch (across edges inside it) to the next boundary half-edge leaving b.
+  auto isBoundary = [&](int t, int i) { return out.edgeCurve[t][i] != -1; };
+  auto nextBoundary = [&](int t, int i) {
+    int b = out.triangles[t][(i + 1) % 3];
+    int tt = t, j = (i + 1) % 3;  // edge b → c of t
+    for (int guard = 0; guard < 4 * nt + 8; ++guard) {
+      if (isBoundary(tt, j)) return tt * 3 + j;
+      auto it = halfEdge.find(key(out.triangles[tt][(j + 1) % 3], b));
+      if (it == halfEdge.end()) return -1;
+      tt = it->second / 3;
+      j = (it->second % 3 + 1) % 3;  // in tt the edge (c → b) is followed by (b → d)
+    }
+    return -1;
+  };
+  std::vector<char> visited(std::size_t(nt) * 3, 0);
+  out.corner.assign(out.positions.size(), 0);
+  std::vector<long> interiorHalfEdges(np, 0);
+  std::vector<std::vector<int>> patchVertices(np);
+  std::vector<std::unordered_map<int, char>> onBoundary(np);
+  for (int t = 0; t < nt; ++t) {
+    int p = out.patch[t];
+    out.patches[p].triangles += 1;
+    for (int i = 0; i < 3; ++i) {
+      patchVertices[p].push_back(out.triangles[t][i]);
+      if (!isBoundary(t, i)) interiorHalfEdges[p] += 1;
+    }
+  }
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      if (!isBoundary(t, i) || visited[t * 3 + i]) continue;
+      int p = out.patch[t];
+      PatchReport& rep = out.patches[p];
+      rep.boundaryLoops += 1;
+      int he = t * 3 + i;
+      for (int guard = 0; guard < 3 * nt + 8 && he >= 0 && !visited[he]; ++guard) {
+        visited[he] = 1;
+        int tt = he / 3, ii = he % 3;
+        onBoundary[p][out.triangles[tt][ii]] = 1;
+        int next = nextBoundary(tt, ii);
+        if (next < 0) {
+          rep.problem = "its boundary is not a closed loop";
+          break;
+        }
+        int b = out.triangles[tt][(ii + 1) % 3];
+        int c1 = out.edgeCurve[tt][ii], c2 = out.edgeCurve[next / 3][next % 3];
+        if (c1 != c2 || alwaysCorner(b)) {
+          rep.corners += 1;
+          out.corner[b] = 1;
+        }
+        he = next;
+      }
+    }
+  for (int p = 0; p < np; ++p) {
+    auto& vs = patchVertices[p];
+    std::sort(vs.begin(), vs.end());
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+    long interiorVertices = 0;
+    for (int v : vs) interiorVertices += onBoundary[p].count(v) ? 0 : 1;
+    PatchReport& rep = out.patches[p];
+    // χ of the patch cut open along its boundary (see the header).
+    rep.eulerCharacteristic = int(interiorVertices - interiorHalfEdges[p] / 2 + rep.triangles);
+    rep.isDisk = rep.eulerCharacteristic == 1 && rep.boundaryLoops == 1;
+    rep.valid = rep.isDisk && rep.corners == 4 && rep.problem.empty();
+    if (rep.problem.empty() && !rep.isDisk)
+      rep.problem = "not a disk (Euler characteristic " + std::to_string(rep.eulerCharacteristic) + ", " +
+                    std::to_string(rep.boundaryLoops) + " boundary loops)";
+    else if (rep.problem.empty() && rep.corners != 4)
+      rep.problem = std::to_string(rep.corners) + " corners";
+  }
+  return out;
+}
+
+}  // namespace fcql

@@ -1,0 +1,51 @@
+// Cutting the surface along the layout's separatrices and extracting its patches (§4).
+//
+// Every triangle crossed by separatrices is split along them (an arrangement of straight
+// chords per triangle, including their mutual crossings and t-junction ends, triangulated
+// without zero-area triangles), so that each separatrix becomes a chain of edges of a refined
+// triangle mesh. Patches are the connected components of triangles across the remaining
+// edges. Corners are found combinatorially along each patch boundary: a corner is where the
+// boundary passes from one separatrix (or the border) to another, at a singular vertex, or at
+// a border vertex whose border index is not zero. A t-junction is therefore a corner only for
+// the patches on the side of the separatrix that ends there.
+#pragma once
+
+#include "layout/layout_solver.h"
+
+#include <string>
+#include <vector>
+
+namespace fcql {
+
+struct PatchReport {
+  int triangles = 0;
+  int boundaryLoops = 0;
+  int eulerCharacteristic = 0;
+  int corners = 0;
+  bool isDisk = false;
+  bool valid = false;  ///< a disk with 4 corners
+  std::string problem; ///< why not valid
+};
+
+struct PatchLayout {
+  std::vector<Vec3> positions;               ///< original vertices first, then new ones
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> originalFace;             ///< per triangle
+  std::vector<int> patch;                    ///< per triangle
+  /// Per triangle and local edge (i → i+1): separatrix index in Layout::separatrices, −2 on
+  /// the border, −1 inside a patch.
+  std::vector<std::array<int, 3>> edgeCurve;
+  std::vector<char> corner;                  ///< per vertex: 1 at a patch corner
+  std::vector<PatchReport> patches;
+  int numOriginalVertices = 0;
+
+  int numPatches() const { return int(patches.size()); }
+  int numInvalidPatches() const;
+  /// Histogram of corner counts over the disk patches: {corners, patches}.
+  std::vector<std::pair<int, int>> cornerHistogram() const;
+};
+
+/// Throws std::runtime_error if the separatrices cannot be embedded (a bug, reported).
+PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout);
+
+}  // namespace fcql
