@@ -6,6 +6,7 @@
 #include "field/field_analysis.h"
 #include "mesh/surface_mesh.h"
 #include "stats_json.h"
+#include "layout/patch_layout.h"
 #include "tracing/separatrix_graph.h"
 
 #include <memory>
@@ -44,7 +45,19 @@ TracingParameters readTracingParameters(const CommandLine& cl);
 TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, StatsJson& stats, bool quiet);
 std::string candidatesObj(const SeparatrixGraph& h);
 
+/// What the layout stage (selection, cycle, propagation, cut, patches) produced.
+struct LayoutStage {
+  FieldAnalysis analysis;                 ///< the field analysis plus any virtual anchors
+  std::unique_ptr<GeodesicGraph> graph;   ///< rebuilt if anchors were added, else null
+  Layout layout;
+  PatchLayout patches;
+  double cutSeconds = 0;
+};
+LayoutParameters readLayoutParameters(const CommandLine& cl);
+LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const LayoutParameters& params, StatsJson& stats, bool quiet);
+
 int fieldCommand(int argc, char** argv);
+int layoutCommand(int argc, char** argv);
 int traceCommand(int argc, char** argv);
 
 }  // namespace fcql

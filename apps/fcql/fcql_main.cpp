@@ -19,6 +19,9 @@ const char* kUsage =
     "  trace MESH|--example NAME [field options] [--alpha 20] [--k 10] [--phi 10] [--threads N] --out DIR\n"
     "        build graph G, trace field-coherent separatrices from every port (Dijkstra, k sinks)\n"
     "        and build graph H; writes DIR/candidates.obj, DIR/field.ffield and DIR/stats.json\n"
+    "  layout MESH|--example NAME [field and trace options] [--ilp-time-limit 60] --out DIR\n"
+    "        select separatrices (0-1 program, solving cycle, t-junctions, borders), cut the\n"
+    "        surface into patches; adds DIR/separatrices.obj and DIR/layout.ply\n"
     "\n"
     "MESH is a triangle mesh in OBJ, PLY or OFF. Examples the tool generates itself:\n"
     "  sphere, torus, double_torus, rounded_box, open_cylinder\n";
@@ -34,6 +37,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "field") return fcql::fieldCommand(argc, argv);
     if (command == "trace") return fcql::traceCommand(argc, argv);
+    if (command == "layout") return fcql::layoutCommand(argc, argv);
     std::cerr << "fcql: error: unknown command '" << command << "' (see fcql --help)\n";
     return 2;
   } catch (const fcql::UsageError& e) {

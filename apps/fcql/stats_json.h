@@ -13,6 +13,7 @@ class StatsJson {
 public:
   void set(const std::string& path, long long value);
   void set(const std::string& path, int value) { set(path, static_cast<long long>(value)); }
+  void set(const std::string& path, long value) { set(path, static_cast<long long>(value)); }
   void set(const std::string& path, double value);
   void set(const std::string& path, const std::string& value);
   void set(const std::string& path, bool value);

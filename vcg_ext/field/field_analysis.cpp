@@ -251,12 +251,17 @@ FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
 }
 
 int FieldAnalysis::numInteriorSingularities() const {
-  return int(std::count_if(singularities.begin(), singularities.end(), [](const SingularVertex& s) { return !s.onBorder; }));
+  return int(std::count_if(singularities.begin(), singularities.end(),
+                           [](const SingularVertex& s) { return !s.onBorder && s.indexQuarters != 0; }));
 }
-int FieldAnalysis::numBorderSingularities() const { return int(singularities.size()) - numInteriorSingularities(); }
+int FieldAnalysis::numBorderSingularities() const {
+  return int(std::count_if(singularities.begin(), singularities.end(),
+                           [](const SingularVertex& s) { return s.onBorder && s.indexQuarters != 0; }));
+}
 int FieldAnalysis::numPorts() const {
   int n = 0;
-  for (const auto& s : singularities) n += int(s.ports.size());
+  for (const auto& s : singularities)
+    if (s.indexQuarters != 0) n += int(s.ports.size());
   return n;
 }
 int FieldAnalysis::indexSumQuarters() const {
@@ -265,7 +270,7 @@ int FieldAnalysis::indexSumQuarters() const {
 std::vector<std::pair<std::string, int>> FieldAnalysis::interiorHistogram() const {
   std::vector<std::pair<int, int>> counts;
   for (const auto& s : singularities) {
-    if (s.onBorder) continue;
+    if (s.onBorder || s.indexQuarters == 0) continue;
     auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == s.indexQuarters; });
     if (it == counts.end()) counts.push_back({s.indexQuarters, 1});
     else ++it->second;

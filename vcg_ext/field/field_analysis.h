@@ -56,7 +56,9 @@ struct FieldAnalysis {
   /// Per vertex: total angle of the star (Θ).
   std::vector<double> starAngle;
   /// Interior vertices with non-zero index, and border vertices with non-zero border index,
-  /// each with its ports; sorted by vertex.
+  /// each with its ports; sorted by vertex. The layout stage may append regular vertices
+  /// (index 0) as virtual anchors for regions without singularities; the counts below skip
+  /// them.
   std::vector<SingularVertex> singularities;
 
   int numInteriorSingularities() const;

@@ -244,10 +244,12 @@ void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, in
   smooth.reserve(std::size_t(n) * 7);
   Eigen::VectorXcd fixedRhs = Eigen::VectorXcd::Zero(n);
   addSmoothness(mesh, unknown, z, smooth, fixedRhs);
+  // Mean diagonal of the smoothness term (edge weights are dimensionless, ~1), a reference for
+  // the tiny regularisations below; 1 if no free face has a neighbour.
   double meanDiagonal = 0;
   for (const auto& t : smooth)
     if (t.row() == t.col()) meanDiagonal += std::real(t.value());
-  meanDiagonal = std::max(meanDiagonal / n, 1e-300);
+  meanDiagonal = meanDiagonal > 0 ? meanDiagonal / n : 1.0;
 
   // E(z) with the curvature term, plus a tiny regularisation that keeps the matrix definite
   // when nothing anchors a component.

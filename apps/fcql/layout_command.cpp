@@ -1,0 +1,91 @@
+#include "command_line.h"
+#include "commands.h"
+#include "output_dir.h"
+
+#include "field/field_io.h"
+#include "layout/layout_io.h"
+#include "layout/patch_closing.h"
+
+#include <algorithm>
+
+#include <chrono>
+
+namespace fcql {
+
+LayoutParameters readLayoutParameters(const CommandLine& cl) {
+  LayoutParameters p;
+  p.ilpTimeLimit = cl.number("ilp-time-limit", p.ilpTimeLimit, 1.0, 86400.0);
+  return p;
+}
+
+LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const LayoutParameters& params, StatsJson& stats, bool quiet) {
+  LayoutStage ls;
+  progress(quiet, "solving the layout (0-1 programs with lp_solve, time limit " + std::to_string(int(params.ilpTimeLimit)) + " s each)");
+  ls.layout = solveLayout(*ts.graph, ts.h, params);
+  for (const auto& m : ls.layout.messages) progress(quiet, "note: " + m);
+  auto cutStart = std::chrono::steady_clock::now();
+  ls.patches = buildPatchLayout(*ts.graph, ls.layout);
+  ClosingReport closing;
+  if (ls.patches.numPatches() > 0 &&
+      std::any_of(ls.patches.patches.begin(), ls.patches.patches.end(), [](const PatchReport& p) { return !p.isDisk; })) {
+    progress(quiet, "some regions are not disks: tracing field lines to close them");
+    ls.analysis = fs.analysis;
+    ls.graph = std::make_unique<GeodesicGraph>(fs.mesh, fs.field, ls.analysis, ts.graph->parameters());
+    closing = closeNonDiskPatches(fs.mesh, fs.field, ls.analysis, ls.graph, ls.layout, ls.patches);
+  }
+  ls.cutSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - cutStart).count();
+  std::string hist;
+  for (const auto& h : ls.patches.cornerHistogram()) hist += (hist.empty() ? "" : ", ") + std::to_string(h.first) + " corners: " + std::to_string(h.second);
+  progress(quiet, "layout: " + std::to_string(ls.layout.separatrices.size()) + " separatrices, " +
+                      std::to_string(ls.patches.numPatches()) + " patches (" + hist + "), " +
+                      std::to_string(ls.layout.tJunctions) + " t-junctions, " + std::to_string(ls.layout.iterations) +
+                      " iterations, " + std::to_string(ls.patches.numInvalidPatches()) + " invalid patches");
+  for (int p = 0; p < ls.patches.numPatches(); ++p)
+    if (!ls.patches.patches[p].valid) progress(quiet, "warning: patch " + std::to_string(p) + ": " + ls.patches.patches[p].problem);
+  stats.set("params.ilp_time_limit", params.ilpTimeLimit);
+  stats.set("graph_h.selected", ls.layout.selectedFromCandidates);
+  stats.set("layout.separatrices", int(ls.layout.separatrices.size()));
+  stats.set("layout.patches", ls.patches.numPatches());
+  stats.set("layout.t_junctions", ls.layout.tJunctions);
+  stats.set("layout.border_connections", ls.layout.borderConnections);
+  stats.set("layout.iterations", ls.layout.iterations);
+  stats.set("layout.dangling_ports", ls.layout.danglingAfterCycle);
+  stats.set("layout.unresolved_ports", int(ls.layout.unresolvedPorts.size()));
+  stats.set("layout.invalid_patches", ls.patches.numInvalidPatches());
+  stats.set("layout.closing_lines", closing.linesAdded);
+  std::vector<std::pair<std::string, int>> corners;
+  for (const auto& h : ls.patches.cornerHistogram()) corners.push_back({std::to_string(h.first), h.second});
+  stats.setCounts("layout.corner_histogram", corners);
+  stats.set("layout.ilp_time_limit_hit", ls.layout.ilpTimeLimitHit);
+  stats.set("time_s.ilp", ls.layout.ilpSeconds);
+  stats.set("time_s.cycle_tracing", ls.layout.cycleTracingSeconds);
+  stats.set("time_s.propagation", ls.layout.propagationSeconds);
+  stats.set("time_s.cut", ls.cutSeconds);
+  return ls;
+}
+
+int layoutCommand(int argc, char** argv) {
+  CommandLine cl(argc, argv, 2,
+                 {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit"}, {"quiet"});
+  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  bool quiet = cl.has("quiet");
+  TracingParameters tp = readTracingParameters(cl);
+  LayoutParameters lp = readLayoutParameters(cl);
+  StatsJson stats;
+  auto start = std::chrono::steady_clock::now();
+  FieldStage fs = runFieldStage(cl, stats, quiet);
+  TraceStage ts = runTraceStage(fs, tp, stats, quiet);
+  LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
+  stats.set("time_s.total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  OutputDir out(cl.value("out"));
+  saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
+  out.writeText("candidates.obj", candidatesObj(ts.h));
+  out.writeText("separatrices.obj", separatricesToObj(ls.layout));
+  out.writeText("layout.ply", patchLayoutToPly(ls.patches));
+  out.writeText("stats.json", stats.toString());
+  out.commit();
+  progress(quiet, "wrote separatrices.obj, layout.ply, candidates.obj, field.ffield and stats.json in " + cl.value("out"));
+  return 0;
+}
+
+}  // namespace fcql

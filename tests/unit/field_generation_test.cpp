@@ -1,0 +1,326 @@
+#include "field/curvature.h"
+#include "field/field_analysis.h"
+#include "field/field_generation.h"
+#include "mesh/mesh_io.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <set>
+
+using namespace fcql;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Distance of an angle to the nearest multiple of 90°.
+double offQuarter(double angle) { return std::abs(std::remainder(angle, kPi / 2)); }
+
+/// Angle between two tangent vectors of face f, mod 90° (0 = same cross direction).
+double crossAngle(const SurfaceMesh& m, int f, const Vec3& a, const Vec3& b) {
+  return offQuarter(std::atan2(m.faceNormal(f).dot(a.cross(b)), a.dot(b)));
+}
+
+/// A grid of (nu+1)×(nv+1) points, closed in u and/or v by identifying the last row/column
+/// with the first; each quad split in two triangles.
+SurfaceMesh gridSurface(int nu, int nv, bool closedU, bool closedV, const std::function<Vec3(double, double)>& at) {
+  const int cu = closedU ? nu : nu + 1, cv = closedV ? nv : nv + 1;
+  std::vector<Vec3> p;
+  for (int j = 0; j < cv; ++j)
+    for (int i = 0; i < cu; ++i) p.push_back(at(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return (j % cv) * cu + (i % cu); };
+  std::vector<std::array<int, 3>> f;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      f.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      f.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return SurfaceMesh(p, f);
+}
+
+SurfaceMesh torus(double R = 1.0, double r = 0.4, int nu = 48, int nv = 24) {
+  return gridSurface(nu, nv, true, true, [&](double s, double t) {
+    double a = 2 * kPi * s, b = 2 * kPi * t;
+    return Vec3((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+  });
+}
+
+/// Open cylinder around z, outward normals, two border loops.
+SurfaceMesh openCylinder(double radius = 0.5, double height = 2.0, int nu = 48, int nv = 32) {
+  return gridSurface(nu, nv, true, false, [&](double s, double t) {
+    double a = 2 * kPi * s;
+    return Vec3(radius * std::cos(a), radius * std::sin(a), height * (t - 0.5));
+  });
+}
+
+/// Box of half-size `half` with edges rounded by `radius`: a finely gridded box whose points
+/// are pulled onto the rounded surface (closest point of the inner box + radius × direction).
+SurfaceMesh roundedBox(const Vec3& half, double radius, int n) {
+  SurfaceMesh cube = fcql::test::sharpCube(n);
+  std::vector<Vec3> p = cube.positions();
+  Vec3 inner = half - Vec3::Constant(radius);
+  for (Vec3& x : p) {
+    Vec3 onBox = x.cwiseProduct(half);
+    Vec3 core = onBox.cwiseMax(-inner).cwiseMin(inner);
+    x = core + radius * (onBox - core).normalized();
+  }
+  return SurfaceMesh(p, cube.faces());
+}
+
+/// Two flat strips meeting along the y axis at a fold (dihedral angle `foldDeg`), open.
+SurfaceMesh foldedSheet(double foldDeg, int n = 16) {
+  double a = foldDeg * kPi / 180;
+  return gridSurface(2 * n, n, false, false, [&](double s, double t) {
+    double u = 2 * s;  // 0..2, fold at u = 1
+    if (u <= 1) return Vec3(u, t, 0);
+    return Vec3(1 + (u - 1) * std::cos(a), t, (u - 1) * std::sin(a));
+  });
+}
+
+SurfaceMesh scaled(const SurfaceMesh& m, double s, const Vec3& shift) {
+  std::vector<Vec3> p = m.positions();
+  for (Vec3& x : p) x = s * x + shift;
+  return SurfaceMesh(p, m.faces());
+}
+
+void expectUnitAndTangent(const SurfaceMesh& m, const CrossField& field) {
+  ASSERT_EQ(field.numFaces(), m.numFaces());
+  for (int f = 0; f < m.numFaces(); ++f) {
+    ASSERT_TRUE(field.u[f].allFinite()) << "face " << f;
+    EXPECT_NEAR(field.u[f].norm(), 1.0, 1e-9) << "face " << f;
+    EXPECT_NEAR(field.u[f].dot(m.faceNormal(f)), 0.0, 1e-9) << "face " << f;
+  }
+}
+
+}  // namespace
+
+TEST(FieldGeneration, FieldIsUnitAndTangentAndIndicesSumToEuler) {
+  for (const SurfaceMesh& m : {torus(), roundedBox(Vec3(1.0, 0.8, 0.6), 0.2, 12), fcql::test::sharpCube(6)}) {
+    CrossField field = generateCrossField(m);
+    expectUnitAndTangent(m, field);
+    FieldAnalysis a = analyzeField(m, field);
+    EXPECT_EQ(a.indexSumQuarters(), 4 * m.eulerCharacteristic());
+  }
+}
+
+TEST(FieldGeneration, TorusFieldIsFreeOfSingularities) {
+  SurfaceMesh m = torus();
+  // With the curvature term (default) and without it (the smoothest field).
+  for (double weight : {-1.0, 0.0}) {
+    FieldGenerationOptions o;
+    o.curvatureWeight = weight;
+    CrossField field = generateCrossField(m, o);
+    expectUnitAndTangent(m, field);
+    EXPECT_EQ(analyzeField(m, field).singularities.size(), 0u) << "curvature weight " << weight;
+  }
+  // The default follows the principal directions (meridians and parallels) of the torus.
+  CrossField field = generateCrossField(m);
+  double worst = 0;
+  for (int f = 0; f < m.numFaces(); ++f) {
+    Vec3 c = m.faceCentroid(f);
+    Vec3 parallel = Vec3(-c.y(), c.x(), 0).normalized();
+    worst = std::max(worst, crossAngle(m, f, field.u[f], parallel - m.faceNormal(f) * parallel.dot(m.faceNormal(f))));
+  }
+  EXPECT_LT(worst, 5 * kPi / 180);
+}
+
+TEST(FieldGeneration, RoundedBoxHasEightCornerSingularities) {
+  const Vec3 half(1.0, 0.8, 0.6);
+  const double radius = 0.2;
+  SurfaceMesh m = roundedBox(half, radius, 14);
+  FieldGenerationReport report;
+  CrossField field = generateCrossField(m, {}, &report);
+  EXPECT_EQ(report.sharpEdges, 0);  // rounded: nothing is sharp
+  FieldAnalysis a = analyzeField(m, field);
+  ASSERT_EQ(a.numInteriorSingularities(), 8);
+  std::set<int> octants;
+  for (const auto& s : a.singularities) {
+    EXPECT_EQ(s.indexQuarters, 1);
+    const Vec3& p = m.position(s.vertex);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_GT(std::abs(p[k]), half[k] - 2 * radius) << "singularity at " << p.transpose() << " is not near a corner";
+    octants.insert((p.x() > 0) + 2 * (p.y() > 0) + 4 * (p.z() > 0));
+  }
+  EXPECT_EQ(octants.size(), 8u);
+}
+
+TEST(FieldGeneration, SharpCubeFollowsItsEdges) {
+  SurfaceMesh m = fcql::test::sharpCube(6);
+  std::vector<char> sharp = detectSharpEdges(m, 35);
+  EXPECT_EQ(std::count(sharp.begin(), sharp.end(), 1), 12 * 6);
+  FieldGenerationReport report;
+  CrossField field = generateCrossField(m, {}, &report);
+  EXPECT_EQ(report.sharpEdges, 12 * 6);
+  // Per side of the 6×6 grid: the triangles with an edge on the side's border, 4·6 − 2.
+  EXPECT_EQ(report.constrainedFaces, 6 * (4 * 6 - 2));
+  // Flat sides: the field is the cube's axes everywhere (the creases add no curvature to them).
+  for (int f = 0; f < m.numFaces(); ++f) EXPECT_LT(crossAngle(m, f, field.u[f], fcql::test::axisField(m).u[f]), 1e-6);
+  FieldAnalysis a = analyzeField(m, field);
+  EXPECT_EQ(a.numInteriorSingularities(), 8);
+  // Threshold above the dihedral angle: no constraint.
+  generateCrossField(m, FieldGenerationOptions{95.0}, &report);
+  EXPECT_EQ(report.sharpEdges, 0);
+  EXPECT_EQ(report.constrainedFaces, 0);
+}
+
+TEST(FieldGeneration, FollowsAFoldOfASheet) {
+  SurfaceMesh m = foldedSheet(60.0);
+  FieldGenerationOptions o;
+  o.alignToBorders = false;
+  FieldGenerationReport report;
+  CrossField field = generateCrossField(m, o, &report);
+  expectUnitAndTangent(m, field);
+  EXPECT_EQ(report.sharpEdges, 16);
+  int checked = 0;
+  for (int f = 0; f < m.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      int g = m.adjacentFace(f, i);
+      if (g < 0) continue;
+      if (m.faceNormal(f).dot(m.faceNormal(g)) > 0.9) continue;  // not the fold
+      EXPECT_LT(crossAngle(m, f, field.u[f], m.edgeVector(f, i)), 1e-6) << "face " << f;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 2 * 16);
+  // A gentler fold than the threshold is not a feature: (almost) the same field everywhere.
+  o.sharpAngleDeg = 70;
+  generateCrossField(m, o, &report);
+  EXPECT_EQ(report.sharpEdges, 0);
+}
+
+TEST(FieldGeneration, OpenCylinderIsAlignedToItsBorders) {
+  SurfaceMesh m = openCylinder();
+  FieldGenerationReport report;
+  CrossField field = generateCrossField(m, {}, &report);
+  expectUnitAndTangent(m, field);
+  EXPECT_EQ(report.constrainedFaces, 2 * 48);
+  int borderFaces = 0;
+  for (int f = 0; f < m.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (m.isBorderEdge(f, i)) {
+        EXPECT_LT(crossAngle(m, f, field.u[f], m.edgeVector(f, i)), 1e-6) << "face " << f;
+        ++borderFaces;
+      }
+  EXPECT_EQ(borderFaces, 2 * 48);
+  // The cylinder is developable: the aligned field is singularity free, also at the borders.
+  FieldAnalysis a = analyzeField(m, field);
+  EXPECT_EQ(a.singularities.size(), 0u);
+  EXPECT_EQ(a.indexSumQuarters(), 0);
+}
+
+TEST(FieldGeneration, SmoothestFieldWithoutAnyDataOrConstraint) {
+  // A sphere (a cube grid pushed onto the unit sphere) with no curvature term: nothing anchors
+  // the field, which is then the smoothest one (an eigenvector), with 8 singularities of +1/4.
+  SurfaceMesh sphere = roundedBox(Vec3(1, 1, 1), 1.0, 10);
+  FieldGenerationOptions o;
+  o.curvatureWeight = 0;
+  CrossField field = generateCrossField(sphere, o);
+  expectUnitAndTangent(sphere, field);
+  FieldAnalysis a = analyzeField(sphere, field);
+  EXPECT_EQ(a.indexSumQuarters(), 8);
+  EXPECT_EQ(a.numInteriorSingularities(), 8);
+
+  // Two components in one mesh: a sharp cube (anchored by its edges) and a torus (free).
+  SurfaceMesh cube = fcql::test::sharpCube(4), ring = torus(1.0, 0.4, 32, 16);
+  std::vector<Vec3> p = cube.positions();
+  std::vector<std::array<int, 3>> f = cube.faces();
+  for (const Vec3& x : ring.positions()) p.push_back(x + Vec3(5, 0, 0));
+  for (auto t : ring.faces()) f.push_back({t[0] + cube.numVertices(), t[1] + cube.numVertices(), t[2] + cube.numVertices()});
+  SurfaceMesh both(p, f);
+  field = generateCrossField(both, o);
+  expectUnitAndTangent(both, field);
+  a = analyzeField(both, field);
+  EXPECT_EQ(a.indexSumQuarters(), 4 * both.eulerCharacteristic());
+  for (const auto& s : a.singularities) EXPECT_LT(s.vertex, cube.numVertices()) << "singularity on the torus";
+}
+
+TEST(FieldGeneration, TinyMeshes) {
+  SurfaceMesh triangle({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0.5, 1, 0)}, {{0, 1, 2}});
+  CrossField field = generateCrossField(triangle);  // fixed to its longest (border) edge
+  expectUnitAndTangent(triangle, field);
+  EXPECT_LT(crossAngle(triangle, 0, field.u[0], Vec3(1, 0, 0)), 1e-9);
+  FieldGenerationOptions o;
+  o.alignToBorders = false;
+  o.curvatureWeight = 0;  // nothing at all to go by: still a valid field
+  expectUnitAndTangent(triangle, generateCrossField(triangle, o));
+  SurfaceMesh tetrahedron({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                          {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+  for (double angle : {35.0, 180.0}) {
+    o.sharpAngleDeg = angle;
+    field = generateCrossField(tetrahedron, o);
+    expectUnitAndTangent(tetrahedron, field);
+    EXPECT_EQ(analyzeField(tetrahedron, field).indexSumQuarters(), 8);
+  }
+}
+
+TEST(FieldGeneration, InvariantToUniformScaling) {
+  SurfaceMesh m = roundedBox(Vec3(1.0, 0.8, 0.6), 0.2, 10);
+  CrossField a = generateCrossField(m);
+  for (double s : {1000.0, 1e-3}) {
+    SurfaceMesh big = scaled(m, s, Vec3(3 * s, -2 * s, 5 * s));
+    CrossField b = generateCrossField(big);
+    double worst = 0;
+    for (int f = 0; f < m.numFaces(); ++f) worst = std::max(worst, crossAngle(m, f, a.u[f], b.u[f]));
+    EXPECT_LT(worst, 1e-6) << "scale " << s;
+  }
+}
+
+TEST(FieldGeneration, RejectsBadOptions) {
+  SurfaceMesh m = torus(1.0, 0.4, 12, 6);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double angle : {-1.0, 180.5, nan, inf}) {
+    FieldGenerationOptions o;
+    o.sharpAngleDeg = angle;
+    EXPECT_THROW(generateCrossField(m, o), FieldError) << angle;
+    EXPECT_THROW(detectSharpEdges(m, angle), FieldError) << angle;
+  }
+  for (double weight : {nan, inf}) {
+    FieldGenerationOptions o;
+    o.curvatureWeight = weight;
+    EXPECT_THROW(generateCrossField(m, o), FieldError) << weight;
+  }
+  FieldGenerationOptions edge;
+  edge.sharpAngleDeg = 180;  // allowed: disables sharp edges
+  EXPECT_NO_THROW(generateCrossField(m, edge));
+  edge.sharpAngleDeg = 0;  // allowed: every non-flat edge is sharp
+  EXPECT_NO_THROW(generateCrossField(m, edge));
+}
+
+TEST(Curvature, CylinderAndTorusShapeOperators) {
+  // Cylinder of radius 0.5: k1 = 2 around, k2 = 0 along the axis.
+  SurfaceMesh cyl = openCylinder(0.5, 2.0, 64, 32);
+  std::vector<FaceTensor> t = faceShapeOperators(cyl);
+  for (int f = 0; f < cyl.numFaces(); ++f) {
+    Vec3 c = cyl.faceCentroid(f);
+    if (std::abs(c.z()) > 0.8) continue;  // the border rows have one-sided vertex normals
+    EXPECT_NEAR(t[f].k1(), 2.0, 0.05);
+    EXPECT_NEAR(t[f].k2(), 0.0, 0.05);
+    double a = t[f].maxDirectionAngle();
+    Vec3 dir = std::cos(a) * cyl.faceFrameX(f) + std::sin(a) * cyl.faceFrameY(f);
+    EXPECT_LT(std::abs(dir.z()), 0.02) << "max curvature direction is not around the cylinder";
+  }
+  // Torus, outer equator: k = 1/(R + r) along the ring, 1/r around the tube; both convex.
+  SurfaceMesh tor = torus(1.0, 0.4, 96, 48);
+  std::vector<FaceTensor> tt = faceShapeOperators(tor);
+  for (int f = 0; f < tor.numFaces(); ++f) {
+    Vec3 c = tor.faceCentroid(f);
+    if (std::hypot(c.x(), c.y()) < 1.38 || std::abs(c.z()) > 0.05) continue;
+    EXPECT_NEAR(tt[f].k1(), 1 / 0.4, 0.1);
+    EXPECT_NEAR(tt[f].k2(), 1 / 1.4, 0.1);
+  }
+}
+
+TEST(FieldGeneration, FertilityHasAFewTensOfSingularities) {
+  FCQL_REQUIRE_SHARED(path, "fertility.obj");
+  SurfaceMesh m = loadMesh(path);
+  CrossField field = generateCrossField(m);
+  FieldAnalysis a = analyzeField(m, field);
+  EXPECT_EQ(a.indexSumQuarters(), 4 * m.eulerCharacteristic());
+  EXPECT_GE(a.numInteriorSingularities(), 24);  // χ = −6 needs at least 24 × (−1/4)
+  EXPECT_LE(a.numInteriorSingularities(), 80);
+}
