@@ -20,6 +20,14 @@ struct FacePoint {
 struct Chord {
   int a, b;   ///< local point indices
   int curve;  ///< separatrix index
+  double paramA, paramB;  ///< path parameter at a and b
+};
+
+/// What an edge of the arrangement lies on.
+struct EdgeInfo {
+  int curve;          ///< separatrix, −2 border, −1 none
+  double paramLow;    ///< path parameter at the lower local point index
+  double paramHigh;   ///< ... at the higher one
 };
 
 /// Builds the arrangement of one triangle and appends its triangles.
@@ -57,30 +65,34 @@ public:
   }
   int addInteriorPoint3d(const Vec3& p) { return addInteriorPoint(to2d(p)); }
 
-  void addChord(int a, int b, int curve) {
-    if (a != b) chords_.push_back({a, b, curve});
+  void addChord(int a, int b, int curve, double paramA, double paramB) {
+    if (a != b) chords_.push_back({a, b, curve, paramA, paramB});
   }
 
   /// Triangulates the arrangement; appends triangles with per-edge curve ids.
   void triangulate(std::vector<std::array<int, 3>>& tris, std::vector<std::array<int, 3>>& curves,
-                   std::vector<int>& originalFace) {
+                   std::vector<std::array<std::array<double, 2>, 3>>& params, std::vector<int>& originalFace) {
     intersectChords();
     // Undirected edges with their curve: chord pieces and boundary pieces.
-    std::map<std::pair<int, int>, int> edges;
-    auto addEdge = [&](int a, int b, int curve) {
+    std::map<std::pair<int, int>, EdgeInfo> edges;
+    auto addEdge = [&](int a, int b, int curve, double pa, double pb) {
       if (a == b) return;
+      EdgeInfo info{curve, a < b ? pa : pb, a < b ? pb : pa};
       auto key = std::make_pair(std::min(a, b), std::max(a, b));
       auto it = edges.find(key);
-      if (it == edges.end() || it->second < 0) edges[key] = std::max(curve, it == edges.end() ? curve : it->second);
+      if (it == edges.end() || it->second.curve < curve) edges[key] = info;
     };
     for (const Chord& c : chords_) {
-      auto on = pointsOnSegment(c.a, c.b);
-      for (std::size_t i = 0; i + 1 < on.size(); ++i) addEdge(on[i], on[i + 1], c.curve);
+      std::vector<double> t;
+      auto on = pointsOnSegment(c.a, c.b, &t);
+      for (std::size_t i = 0; i + 1 < on.size(); ++i)
+        addEdge(on[i], on[i + 1], c.curve, c.paramA + t[i] * (c.paramB - c.paramA),
+                c.paramA + t[i + 1] * (c.paramB - c.paramA));
     }
     for (int i = 0; i < 3; ++i) {
       int curve = mesh_.isBorderEdge(f_, i) ? -2 : -1;
       auto on = pointsOnSegment(i, (i + 1) % 3);
-      for (std::size_t k = 0; k + 1 < on.size(); ++k) addEdge(on[k], on[k + 1], curve);
+      for (std::size_t k = 0; k + 1 < on.size(); ++k) addEdge(on[k], on[k + 1], curve, 0, 0);
     }
     // Faces of the planar graph, traced with the face on the left.
     const int n = int(points_.size());
@@ -117,13 +129,14 @@ public:
         for (std::size_t i = 0; i < cycle.size(); ++i)
           area += cross2(points_[cycle[i]].xy, points_[cycle[(i + 1) % cycle.size()]].xy);
         if (area <= 0) continue;  // the outer face
-        earClip(cycle, edges, tris, curves, originalFace);
+        earClip(cycle, edges, tris, curves, params, originalFace);
       }
   }
 
 private:
-  /// Local indices of the points on segment [a, b], sorted from a to b.
-  std::vector<int> pointsOnSegment(int a, int b) const {
+  /// Local indices of the points on segment [a, b], sorted from a to b (with their
+  /// parameters along it in `params` if given).
+  std::vector<int> pointsOnSegment(int a, int b, std::vector<double>* params = nullptr) const {
     const Vec2 pa = points_[a].xy, pb = points_[b].xy;
     Vec2 d = pb - pa;
     double len2 = d.squaredNorm();
@@ -138,7 +151,10 @@ private:
     }
     std::sort(on.begin(), on.end());
     std::vector<int> out;
-    for (const auto& p : on) out.push_back(p.second);
+    for (const auto& p : on) {
+      out.push_back(p.second);
+      if (params) params->push_back(p.first);
+    }
     return out;
   }
 
@@ -158,12 +174,18 @@ private:
       }
   }
 
-  void earClip(std::vector<int> poly, const std::map<std::pair<int, int>, int>& edges,
+  void earClip(std::vector<int> poly, const std::map<std::pair<int, int>, EdgeInfo>& edges,
                std::vector<std::array<int, 3>>& tris, std::vector<std::array<int, 3>>& curves,
-               std::vector<int>& originalFace) {
+               std::vector<std::array<std::array<double, 2>, 3>>& params, std::vector<int>& originalFace) {
     auto curveOf = [&](int a, int b) {
       auto it = edges.find({std::min(a, b), std::max(a, b)});
-      return it == edges.end() ? -1 : it->second;
+      return it == edges.end() ? -1 : it->second.curve;
+    };
+    auto paramOf = [&](int a, int b) -> std::array<double, 2> {
+      auto it = edges.find({std::min(a, b), std::max(a, b)});
+      if (it == edges.end()) return {0, 0};
+      return a < b ? std::array<double, 2>{it->second.paramLow, it->second.paramHigh}
+                   : std::array<double, 2>{it->second.paramHigh, it->second.paramLow};
     };
     double scale = 0;
     for (int i : poly) scale = std::max(scale, points_[i].xy.norm());
@@ -193,7 +215,8 @@ private:
       int a = poly[(best + m - 1) % m], b = poly[best], c = poly[(best + 1) % m];
       tris.push_back({points_[a].global, points_[b].global, points_[c].global});
       curves.push_back({curveOf(a, b), curveOf(b, c), -1});  // c→a is inside unless it is a polygon edge
-      if (poly.size() == 3) curves.back()[2] = curveOf(c, a);
+      params.push_back({paramOf(a, b), paramOf(b, c), std::array<double, 2>{0, 0}});
+      if (poly.size() == 3) curves.back()[2] = curveOf(c, a), params.back()[2] = paramOf(c, a);
       originalFace.push_back(f_);
       poly.erase(poly.begin() + best);
     }
@@ -254,12 +277,13 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
   struct FaceChord {
     int curve;
     PathPoint a, b;
+    double paramA, paramB;
   };
   std::vector<std::vector<FaceChord>> chordsOfFace(mesh.numFaces());
   for (int s = 0; s < int(layout.separatrices.size()); ++s) {
     const TracedPath& path = layout.separatrices[s].path;
     for (std::size_t i = 0; i < path.segments.size(); ++i)
-      chordsOfFace[path.segments[i].face].push_back({s, path.points[i], path.points[i + 1]});
+      chordsOfFace[path.segments[i].face].push_back({s, path.points[i], path.points[i + 1], double(i), double(i + 1)});
   }
   for (int f = 0; f < mesh.numFaces(); ++f) {
     bool touched = !chordsOfFace[f].empty();
@@ -268,6 +292,7 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
       out.triangles.push_back(mesh.face(f));
       out.edgeCurve.push_back({mesh.isBorderEdge(f, 0) ? -2 : -1, mesh.isBorderEdge(f, 1) ? -2 : -1,
                                mesh.isBorderEdge(f, 2) ? -2 : -1});
+      out.edgeParam.push_back({});
       out.originalFace.push_back(f);
       continue;
     }
@@ -281,9 +306,9 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     };
     for (const auto& c : chordsOfFace[f]) {
       int a = local(c.a), b = local(c.b);
-      arr.addChord(a, b, c.curve);
+      arr.addChord(a, b, c.curve, c.paramA, c.paramB);
     }
-    arr.triangulate(out.triangles, out.edgeCurve, out.originalFace);
+    arr.triangulate(out.triangles, out.edgeCurve, out.edgeParam, out.originalFace);
   }
 
   // Patches: components across edges that are not on a separatrix or the border.
@@ -297,7 +322,10 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     for (int i = 0; i < 3; ++i) {
       if (out.edgeCurve[t][i] < 0) continue;
       auto it = halfEdge.find(key(out.triangles[t][(i + 1) % 3], out.triangles[t][i]));
-      if (it != halfEdge.end()) out.edgeCurve[it->second / 3][it->second % 3] = out.edgeCurve[t][i];
+      if (it != halfEdge.end()) {
+        out.edgeCurve[it->second / 3][it->second % 3] = out.edgeCurve[t][i];
+        out.edgeParam[it->second / 3][it->second % 3] = {out.edgeParam[t][i][1], out.edgeParam[t][i][0]};
+      }
     }
   UnionFind uf(nt);
   for (int t = 0; t < nt; ++t)
@@ -365,7 +393,10 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         }
         int b = out.triangles[tt][(ii + 1) % 3];
         int c1 = out.edgeCurve[tt][ii], c2 = out.edgeCurve[next / 3][next % 3];
-        if (c1 != c2 || alwaysCorner(b)) {
+        // Same separatrix on both sides of b, but is it the same stretch of it?
+        bool jump = c1 >= 0 && c1 == c2 &&
+                    std::abs(out.edgeParam[tt][ii][1] - out.edgeParam[next / 3][next % 3][0]) > 1e-6;
+        if (c1 != c2 || jump || alwaysCorner(b)) {
           rep.corners += 1;
           out.corner[b] = 1;
         }

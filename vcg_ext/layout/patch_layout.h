@@ -5,7 +5,8 @@
 // without zero-area triangles), so that each separatrix becomes a chain of edges of a refined
 // triangle mesh. Patches are the connected components of triangles across the remaining
 // edges. Corners are found combinatorially along each patch boundary: a corner is where the
-// boundary passes from one separatrix (or the border) to another, at a singular vertex, or at
+// boundary passes from one separatrix (or the border) to another, or to another stretch of the
+// same separatrix (a separatrix crossing itself), at a singular vertex, or at
 // a border vertex whose border index is not zero. A t-junction is therefore a corner only for
 // the patches on the side of the separatrix that ends there.
 #pragma once
@@ -35,6 +36,10 @@ struct PatchLayout {
   /// Per triangle and local edge (i → i+1): separatrix index in Layout::separatrices, −2 on
   /// the border, −1 inside a patch.
   std::vector<std::array<int, 3>> edgeCurve;
+  /// Per triangle and local edge on a separatrix: the path parameter (segment index +
+  /// fraction) at its two ends, corner i and corner i+1. Tells a separatrix crossing itself
+  /// from one running straight on.
+  std::vector<std::array<std::array<double, 2>, 3>> edgeParam;
   std::vector<char> corner;                  ///< per vertex: 1 at a patch corner
   std::vector<PatchReport> patches;
   int numOriginalVertices = 0;
