@@ -5,6 +5,6 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh
 example=${1:-rounded_box}
 out="out/$example"
-./build/bin/fcql field --example "$example" --out "$out"
+./build/bin/fcql layout --example "$example" --out "$out"
 echo "outputs in $(pwd)/$out:"
 ls -l "$out"

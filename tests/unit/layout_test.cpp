@@ -94,3 +94,55 @@ TEST(Layout, EightPatchesAreQuadDisks) {
   for (const auto& p : s->patches.patches) EXPECT_TRUE(p.isDisk) << p.problem;
   EXPECT_EQ(s->patches.numInvalidPatches(), 0);
 }
+
+#include "field/field_generation.h"
+#include "layout/patch_closing.h"
+#include "mesh/generators.h"
+
+namespace {
+
+/// The whole layout pipeline as the CLI runs it, including the closing of non-disk regions.
+std::unique_ptr<Solved> solveGenerated(SurfaceMesh mesh) {
+  CrossField field = generateCrossField(mesh);
+  auto s = solve(std::move(mesh), std::move(field));
+  bool allDisks = true;
+  for (const auto& p : s->patches.patches) allDisks = allDisks && p.isDisk;
+  if (!allDisks) closeNonDiskPatches(s->mesh, s->field, s->analysis, s->graph, s->layout, s->patches);
+  return s;
+}
+
+}  // namespace
+
+TEST(Layout, RoundedBoxGivesSixPatchesAndNoTJunctions) {
+  auto s = solveGenerated(makeRoundedBox());
+  checkLayoutInvariants(*s);
+  EXPECT_EQ(s->patches.numPatches(), 6);
+  EXPECT_EQ(s->layout.tJunctions, 0);
+  EXPECT_EQ(s->patches.numInvalidPatches(), 0);
+}
+
+TEST(Layout, OpenCylinderClosesAgainstItsBorders) {
+  auto s = solveGenerated(makeOpenCylinder());
+  checkLayoutInvariants(*s);
+  ASSERT_GE(s->patches.numPatches(), 1);
+  for (const auto& p : s->patches.patches) {
+    EXPECT_TRUE(p.valid) << p.problem;
+    EXPECT_EQ(p.corners, 4);
+  }
+  EXPECT_GE(s->layout.borderConnections, 2) << "the cutting line must reach both borders";
+}
+
+TEST(Layout, TorusWithoutSingularitiesGetsOneQuadPatch) {
+  auto s = solveGenerated(makeTorus());
+  EXPECT_EQ(s->analysis.numInteriorSingularities(), 0);
+  ASSERT_EQ(s->patches.numPatches(), 1);
+  EXPECT_TRUE(s->patches.patches[0].valid) << s->patches.patches[0].problem;
+}
+
+TEST(Layout, DoubleTorusPatchesAreQuadDisks) {
+  auto s = solveGenerated(makeDoubleTorus());
+  checkLayoutInvariants(*s);
+  EXPECT_EQ(s->analysis.indexSumQuarters(), 4 * -2);
+  EXPECT_EQ(s->patches.numInvalidPatches(), 0);
+  EXPECT_GT(s->patches.numPatches(), 8);
+}

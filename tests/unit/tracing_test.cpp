@@ -232,3 +232,47 @@ TEST(Tracing, BarriersAreNeverCrossedTangentially) {
   }
   EXPECT_GT(onBarrier, 0);
 }
+
+#include "field/field_generation.h"
+#include "mesh/generators.h"
+
+TEST(Tracing, RoundedBoxCandidatesIncludeTheTwelveBoxEdges) {
+  SurfaceMesh m = makeRoundedBox();
+  CrossField f = generateCrossField(m);
+  auto t = trace(m, f, TracingParameters{});
+  ASSERT_EQ(t->analysis.numInteriorSingularities(), 8);
+  // Each corner singularity sits in one octant; box edges join corners differing in one sign.
+  auto octant = [&](int v) {
+    const Vec3& p = t->mesh.position(v);
+    return (p.x() > 0 ? 1 : 0) | (p.y() > 0 ? 2 : 0) | (p.z() > 0 ? 4 : 0);
+  };
+  std::set<std::pair<int, int>> joined;
+  for (const auto& c : t->h.arcs) {
+    int a = octant(t->graph->ports()[c.portA].vertex), b = octant(t->graph->ports()[c.portB].vertex);
+    joined.insert({std::min(a, b), std::max(a, b)});
+    checkCoherent(*t, c.path);
+  }
+  int edges = 0;
+  for (int a = 0; a < 8; ++a)
+    for (int bit : {1, 2, 4})
+      if (!(a & bit)) {
+        ++edges;
+        EXPECT_TRUE(joined.count({a, a | bit})) << "no candidate between octants " << a << " and " << (a | bit);
+      }
+  EXPECT_EQ(edges, 12);
+}
+
+TEST(Tracing, TorusWithSymmetricFieldHasNoPaths) {
+  SurfaceMesh m = makeTorus();
+  // The field along the rings of the torus: rotationally symmetric, no singularities.
+  std::vector<Vec3> u(m.numFaces());
+  for (int f = 0; f < m.numFaces(); ++f) {
+    Vec3 c = m.faceCentroid(f);
+    u[f] = Vec3(-c.y(), c.x(), 0);
+  }
+  auto t = trace(m, CrossField::fromVectors(m, u), TracingParameters{});
+  EXPECT_EQ(t->analysis.singularities.size(), 0u);
+  EXPECT_EQ(t->graph->ports().size(), 0u);
+  EXPECT_TRUE(t->h.arcs.empty());
+  EXPECT_GT(t->graph->numNodes(), 0);
+}

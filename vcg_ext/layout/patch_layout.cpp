@@ -346,6 +346,15 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
   // Vertices that are corners whenever a patch boundary passes through them.
   const auto& index = graph.analysis().vertexIndexQuarters;
   auto alwaysCorner = [&](int v) { return v < mesh.numVertices() && index[v] != 0; };
+  // A field line that closes on itself through a regular (virtual) anchor runs straight on
+  // through it: its parameter wraps from the last segment back to 0 there.
+  std::vector<int> closedLoopLength(layout.separatrices.size(), -1);
+  for (int i = 0; i < int(layout.separatrices.size()); ++i) {
+    const auto& s = layout.separatrices[i];
+    if (s.portA < 0 || s.portB < 0) continue;
+    int va = graph.ports()[s.portA].vertex, vb = graph.ports()[s.portB].vertex;
+    if (va == vb && index[va] == 0) closedLoopLength[i] = int(s.path.segments.size());
+  }
 
   // Walk boundary loops. From boundary half-edge (a→b) in triangle t, rotate about b through
   // the patch (across edges inside it) to the next boundary half-edge leaving b.
@@ -394,8 +403,9 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         int b = out.triangles[tt][(ii + 1) % 3];
         int c1 = out.edgeCurve[tt][ii], c2 = out.edgeCurve[next / 3][next % 3];
         // Same separatrix on both sides of b, but is it the same stretch of it?
-        bool jump = c1 >= 0 && c1 == c2 &&
-                    std::abs(out.edgeParam[tt][ii][1] - out.edgeParam[next / 3][next % 3][0]) > 1e-6;
+        double p1 = out.edgeParam[tt][ii][1], p2 = out.edgeParam[next / 3][next % 3][0];
+        bool jump = c1 >= 0 && c1 == c2 && std::abs(p1 - p2) > 1e-6;
+        if (jump && closedLoopLength[c1] > 0 && std::abs(std::abs(p1 - p2) - closedLoopLength[c1]) < 1e-6) jump = false;
         if (c1 != c2 || jump || alwaysCorner(b)) {
           rep.corners += 1;
           out.corner[b] = 1;
