@@ -109,6 +109,11 @@ public:
       for (std::int64_t a = b; a < e; ++a) g_.arcTarget_[a] = tmp[a - b].first, g_.arcWeight_[a] = tmp[a - b].second;
     }
     g_.numLiveNodes_ = std::count(live.begin(), live.end(), 1);
+    g_.borderTerminal_.assign(numSlots, 0);
+    const EdgeSampling& es = g_.sampling_;
+    for (int q = 0; q < es.numSamples(); ++q)
+      if (es.edgeFace[es.sampleEdge[q]][1] < 0)
+        for (int j = 0; j < 4; ++j) g_.borderTerminal_[GeodesicGraph::edgeNode(q, 1, j)] = 1;
   }
 
 private:

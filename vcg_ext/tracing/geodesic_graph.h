@@ -73,10 +73,7 @@ public:
   bool isPortNode(int node) const { return node >= portBase_; }
   int portOfNode(int node) const { return (node - portBase_) / 2; }
   bool isSinkNode(int node) const { return isPortNode(node) && (node - portBase_) % 2 == 1; }
-  bool isBorderTerminal(int node) const {
-    return !isPortNode(node) && nodeSide(node) == 1 &&
-           sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][1] < 0;
-  }
+  bool isBorderTerminal(int node) const { return borderTerminal_[node] != 0; }
   /// Face an edge node continues into (−1 for a border terminal).
   int nodeFace(int node) const {
     return sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][nodeSide(node)];
@@ -112,6 +109,7 @@ private:
   std::vector<std::int64_t> arcBegin_;
   std::vector<int> arcTarget_;
   std::vector<float> arcWeight_;
+  std::vector<unsigned char> borderTerminal_;  ///< per node slot
   long numLiveNodes_ = 0;
   friend class GeodesicGraphBuilder;
 };

@@ -107,18 +107,18 @@ struct Terminal {
 class Search {
 public:
   explicit Search(const GeodesicGraph& g)
-      : g_(g), dist_(g.numNodeSlots(), std::numeric_limits<double>::infinity()), pred_(g.numNodeSlots(), -1),
+      : g_(g), dist_(g.numNodeSlots(), std::numeric_limits<float>::infinity()), pred_(g.numNodeSlots(), -1),
         settled_(g.numNodeSlots(), 0) {}
 
   std::vector<TracedPath> run(int port, const SearchOptions& opt) {
     reset();
     std::vector<TracedPath> found;
     terminals_.clear();
-    using Entry = std::pair<double, int>;
+    using Entry = std::pair<float, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
     const int source = g_.sourceNode(port);
     setDist(source, 0, -1);
-    heap.push({0.0, source});
+    heap.push({0.0f, source});
     const BarrierSet* barriers = opt.barriers && !opt.barriers->empty() ? opt.barriers : nullptr;
     const double alpha = g_.parameters().alpha;
     int sinks = 0;
@@ -151,7 +151,7 @@ public:
         int v = g_.arcTarget(a);
         if (settled_[v]) continue;
         if (!opt.tJunctionMode && g_.isBorderTerminal(v)) continue;  // paths reaching the border are dropped
-        double nd = d + g_.arcWeight(a);
+        float nd = d + g_.arcWeight(a);
         if (barriers) {
           PathSegment seg = arcSegment(g_, u, v);
           const auto& chords = barriers->inFace(seg.face);
@@ -178,7 +178,7 @@ public:
               Vec3 dir = g_.field().direction(g_.mesh(), seg.face, seg.direction);
               double td = d + anisotropicLength(crossingPoint - a0, dir, alpha);
               terminals_.push_back({u, crossing, crossingPoint, seg});
-              heap.push({td, -int(terminals_.size())});
+              heap.push({float(td), -int(terminals_.size())});
               continue;
             }
           }
@@ -203,14 +203,14 @@ private:
 
   void reset() {
     for (int n : touched_) {
-      dist_[n] = std::numeric_limits<double>::infinity();
+      dist_[n] = std::numeric_limits<float>::infinity();
       pred_[n] = -1;
       settled_[n] = 0;
     }
     touched_.clear();
   }
 
-  void setDist(int n, double d, int pred) {
+  void setDist(int n, float d, int pred) {
     if (std::isinf(dist_[n])) touched_.push_back(n);
     dist_[n] = d;
     pred_[n] = pred;
@@ -250,7 +250,7 @@ private:
   }
 
   const GeodesicGraph& g_;
-  std::vector<double> dist_;
+  std::vector<float> dist_;
   std::vector<int> pred_;
   std::vector<char> settled_;
   std::vector<int> touched_;
