@@ -167,3 +167,22 @@ TEST(FieldAnalysis, StarChartCarriesOneDirectionAroundTheVertex) {
     EXPECT_NEAR(c.theta * c.flatScale, 2 * M_PI, 1e-12);
   }
 }
+
+#include "field/field_generation.h"
+
+TEST(FieldAnalysis, PortCountsMatchIndicesOnSharpAndNoisyMeshes) {
+  // Fields aligned to sharp edges put cross directions exactly along mesh edges; the port
+  // count must still be 4 − 4·index (interior) and 1 − 4·index (border) at every singularity.
+  for (const char* name : {"deckel", "fandisk", "dragon", "camelhead"}) {
+    std::string obj = test::sharedMesh(std::string(name) + ".obj");
+    if (obj.empty()) GTEST_SKIP() << "../shared is absent: skipped";
+    SurfaceMesh m = loadMesh(obj);
+    std::string ffield = test::sharedMesh(std::string(name) + ".ffield");
+    CrossField f = ffield.empty() ? generateCrossField(m) : loadField(m, ffield);
+    FieldAnalysis a = analyzeField(m, f);
+    for (const auto& s : a.singularities) {
+      int expected = s.onBorder ? std::max(0, 1 - s.indexQuarters) : 4 - s.indexQuarters;
+      EXPECT_EQ(int(s.ports.size()), expected) << name << " vertex " << s.vertex << " index/4 " << s.indexQuarters;
+    }
+  }
+}

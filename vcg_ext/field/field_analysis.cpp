@@ -86,14 +86,22 @@ std::vector<double> levelsIn(double lo, double hi) {
 /// Ports are where g crosses a multiple of π/2 downward (see the header for the count). The
 /// values of g at the ends of consecutive faces are chained (start of k+1 = end of k + δ_k) so
 /// that a crossing exactly on an edge is counted once.
+/// x moved exactly onto the nearest multiple of π/2 if it is within rounding noise of it, so
+/// that a direction exactly along an edge (fields aligned to sharp edges and borders) is
+/// counted once, on the same side of the comparison everywhere.
+double snapToLevel(double x) {
+  double level = std::round(x / kQuarter) * kQuarter;
+  return std::abs(x - level) < 1e-9 ? level : x;
+}
+
 std::vector<PortEvent> portEvents(const StarChart& w) {
   const int n = int(w.psi.size());
   std::vector<PortEvent> events;
-  double gStart = w.psi[0] - w.start[0];
+  double gStart = snapToLevel(w.psi[0] - w.start[0]);
   for (int k = 0; k < n; ++k) {
     double span = w.start[k + 1] - w.start[k];
-    double gEnd = gStart - span;
-    for (double L : levelsIn(gEnd, gStart)) events.push_back({w.start[k] + (gStart - L), +1, k});
+    double gEnd = snapToLevel(gStart - span);
+    for (double L : levelsIn(gEnd, gStart)) events.push_back({std::min(w.start[k] + (gStart - L), w.start[k + 1]), +1, k});
     bool hasJump = k + 1 < n || w.loop;
     if (!hasJump) {
       // Border vertex: a direction exactly along the last (border) edge is kept here and
@@ -101,14 +109,14 @@ std::vector<PortEvent> portEvents(const StarChart& w) {
       if (std::fmod(gEnd, kQuarter) == 0) events.push_back({w.start[k + 1], +1, k});
       break;
     }
-    double d = w.delta[k];
+    const double gNext = snapToLevel(gEnd + w.delta[k]);
     int nextFace = (k + 1) % n;
-    if (d > 0) {
-      for (std::size_t c = levelsIn(gEnd, gEnd + d).size(); c > 0; --c) events.push_back({w.start[k + 1], -1, nextFace});
-    } else if (d < 0) {
-      for (std::size_t c = levelsIn(gEnd + d, gEnd).size(); c > 0; --c) events.push_back({w.start[k + 1], +1, nextFace});
+    if (gNext > gEnd) {
+      for (std::size_t c = levelsIn(gEnd, gNext).size(); c > 0; --c) events.push_back({w.start[k + 1], -1, nextFace});
+    } else if (gNext < gEnd) {
+      for (std::size_t c = levelsIn(gNext, gEnd).size(); c > 0; --c) events.push_back({w.start[k + 1], +1, nextFace});
     }
-    gStart = gEnd + d;
+    gStart = gNext;
   }
   // A port found at the very end of a loop (chart angle Θ) is the same as one at angle 0.
   for (auto& e : events)

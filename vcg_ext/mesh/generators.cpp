@@ -1,8 +1,11 @@
 #include "mesh/generators.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <utility>
 
 namespace fcql {
 namespace {
@@ -136,28 +139,81 @@ SurfaceMesh makeOpenCylinder(double radius, double height, int nu, int nv) {
 }
 
 SurfaceMesh makeRoundedBox(Vec3 half, double radius, int resolution) {
-  if (!(radius > 0 && radius < half.minCoeff()) || resolution < 2)
+  if (!(radius > 0 && radius < half.minCoeff()) || !half.allFinite() || resolution < 2)
     throw MeshError("rounded box needs 0 < radius < the smallest half-size and resolution >= 2");
-  // A cube grid of n cells per side, pulled onto the rounded box: closest point of the inner
-  // box plus radius times the direction. n is chosen so that each rounded strip gets a few
-  // cells across.
-  int n = std::max(resolution, int(std::ceil(4 * half.maxCoeff() / radius)));
-  MeshBuilder b;
+  // The surface at distance `radius` from the inner box of half-size half - radius. It is
+  // meshed as the outer box, each side a grid, every grid point p pulled onto the surface as
+  // core + radius * normalize(p - core), core = the closest point of the inner box. Grid points
+  // on a flat part of the outer box stay where they are; those in a strip of width `radius`
+  // along an outer box edge land on the quarter cylinder (and, near the corners, on the sphere
+  // octant). The grid lines are placed per axis, not uniformly: the flat middle gets
+  // ~resolution segments per unit length, each strip gets k lines at offsets radius·tan(θ),
+  // which puts them at equal angles θ on the rounded part (the strips of the two sides
+  // meeting at an edge each cover 45° of its quarter circle).
+  const Vec3 inner = half - Vec3::Constant(radius);
+  const double quarterArc = 0.5 * kPi * radius;
+  // Segments per strip: quarter circle at the requested density, but at least 4 segments on
+  // it in all (2 per strip) so that it stays smooth (≤ 22.5° between neighbouring rows).
+  const int k = std::max(2, int(std::ceil(0.5 * quarterArc * resolution - 1e-9)));
+  std::array<std::vector<double>, 3> lines;  // sorted grid coordinates on [-half, half] per axis
+  for (int axis = 0; axis < 3; ++axis) {
+    const double flat = inner[axis];
+    const int m = std::max(1, int(std::ceil(2 * flat * resolution - 1e-9)));
+    std::vector<double> strip;  // offsets into the strip, increasing, ending exactly at radius
+    for (int i = 1; i < k; ++i) strip.push_back(radius * std::tan(0.25 * kPi * i / k));
+    strip.push_back(radius);
+    std::vector<double>& l = lines[axis];
+    for (auto it = strip.rbegin(); it != strip.rend(); ++it) l.push_back(-flat - *it);
+    for (int i = 0; i <= m; ++i) l.push_back(-flat + 2 * flat * i / m);
+    for (double s : strip) l.push_back(flat + s);
+    l.front() = -half[axis];  // exact extent, whatever the rounding above
+    l.back() = half[axis];
+  }
+
+  // Vertices are keyed by their integer grid indices on the outer box, so the sides share the
+  // vertices of their common edges exactly (no tolerance involved).
+  std::map<std::array<int, 3>, int> index;
+  std::vector<Vec3> positions;
+  auto vertexAt = [&](const std::array<int, 3>& g) {
+    auto it = index.find(g);
+    if (it != index.end()) return it->second;
+    const Vec3 onBox(lines[0][g[0]], lines[1][g[1]], lines[2][g[2]]);
+    const Vec3 core = onBox.cwiseMax(-inner).cwiseMin(inner);
+    const Vec3 offset = onBox - core;  // never zero: onBox is on the outer box
+    positions.push_back(core + radius * offset.normalized());
+    return index[g] = int(positions.size()) - 1;
+  };
+
+  std::vector<std::array<int, 3>> faces;
   for (int axis = 0; axis < 3; ++axis)
     for (int side = -1; side <= 1; side += 2) {
-      Vec3 normal = Vec3::Zero(), u = Vec3::Zero(), v = Vec3::Zero();
-      normal[axis] = side;
-      u[(axis + 1) % 3] = 2;
-      v[(axis + 2) % 3] = 2;
-      b.addGrid(normal - u / 2 - v / 2, u, v, n, n, normal);
+      // Tangent axes a, b with (e_a, e_b, outward normal) right-handed: (axis+1, axis+2) on
+      // the positive side, swapped on the negative one.
+      int a = (axis + 1) % 3, b = (axis + 2) % 3;
+      if (side < 0) std::swap(a, b);
+      const int na = int(lines[a].size()) - 1, nb = int(lines[b].size()) - 1;
+      const int fixed = side > 0 ? int(lines[axis].size()) - 1 : 0;
+      auto at = [&](int i, int j) {
+        std::array<int, 3> g;
+        g[axis] = fixed;
+        g[a] = i;
+        g[b] = j;
+        return vertexAt(g);
+      };
+      for (int j = 0; j < nb; ++j)
+        for (int i = 0; i < na; ++i) {
+          const int v00 = at(i, j), v10 = at(i + 1, j), v11 = at(i + 1, j + 1), v01 = at(i, j + 1);
+          // Split along the shorter diagonal (after the mapping): better angles near corners.
+          if ((positions[v00] - positions[v11]).squaredNorm() <= (positions[v10] - positions[v01]).squaredNorm()) {
+            faces.push_back({v00, v10, v11});
+            faces.push_back({v00, v11, v01});
+          } else {
+            faces.push_back({v00, v10, v01});
+            faces.push_back({v10, v11, v01});
+          }
+        }
     }
-  Vec3 inner = half - Vec3::Constant(radius);
-  for (Vec3& x : b.positions()) {
-    Vec3 onBox = x.cwiseProduct(half);
-    Vec3 core = onBox.cwiseMax(-inner).cwiseMin(inner);
-    x = core + radius * (onBox - core).normalized();
-  }
-  return SurfaceMesh(b.positions(), b.faces());
+  return SurfaceMesh(std::move(positions), std::move(faces));
 }
 
 SurfaceMesh makeDoubleTorus(int resolution) {
