@@ -84,6 +84,7 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   set_add_rowmode(lp.get(), FALSE);
   set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
   set_presolve(lp.get(), PRESOLVE_NONE, get_presolveloops(lp.get()));
+  set_mip_gap(lp.get(), FALSE, relativeGap_);
   int ret = ::solve(lp.get());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto readSolution = [&]() {

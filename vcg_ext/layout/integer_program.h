@@ -35,6 +35,9 @@ public:
   void setObjective(int variable, double coefficient);
   void addConstraint(const std::vector<std::pair<int, double>>& terms, Sense sense, double rhs);
   void setMaximize(bool maximize) { maximize_ = maximize; }
+  /// Branch and bound stops when the best bound is within this relative gap of the best
+  /// solution found (lp_solve's default is 1e-9).
+  void setRelativeGap(double gap) { relativeGap_ = gap; }
 
   int numVariables() const { return int(lower_.size()); }
   int numConstraints() const { return int(rows_.size()); }
@@ -52,6 +55,7 @@ private:
   std::vector<char> integer_;
   std::vector<Row> rows_;
   bool maximize_ = false;
+  double relativeGap_ = 1e-9;
 };
 
 const char* toString(IntegerProgram::Status status);

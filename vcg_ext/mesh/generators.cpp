@@ -147,18 +147,23 @@ SurfaceMesh makeRoundedBox(Vec3 half, double radius, int resolution) {
   // on a flat part of the outer box stay where they are; those in a strip of width `radius`
   // along an outer box edge land on the quarter cylinder (and, near the corners, on the sphere
   // octant). The grid lines are placed per axis, not uniformly: the flat middle gets
-  // ~resolution segments per unit length, each strip gets k lines at offsets radius·tan(θ),
-  // which puts them at equal angles θ on the rounded part (the strips of the two sides
+  // ~resolution segments per unit length, each strip k segments, with lines at offsets
+  // radius·tan(θ) that land at equal angles θ on the rounded part (the strips of the two sides
   // meeting at an edge each cover 45° of its quarter circle).
   const Vec3 inner = half - Vec3::Constant(radius);
   const double quarterArc = 0.5 * kPi * radius;
   // Segments per strip: quarter circle at the requested density, but at least 4 segments on
   // it in all (2 per strip) so that it stays smooth (≤ 22.5° between neighbouring rows).
   const int k = std::max(2, int(std::ceil(0.5 * quarterArc * resolution - 1e-9)));
+  // When that minimum wins (a radius small against 1/resolution), the strips' cells are short
+  // across the edge; so that they stay at most 2:1 (no slivers), the flat parts, and with them
+  // the spacing along the edges, get denser than `resolution` where needed.
+  const double arcSegment = quarterArc / (2 * k);
+  const double density = std::max(double(resolution), 0.5 / arcSegment);
   std::array<std::vector<double>, 3> lines;  // sorted grid coordinates on [-half, half] per axis
   for (int axis = 0; axis < 3; ++axis) {
     const double flat = inner[axis];
-    const int m = std::max(1, int(std::ceil(2 * flat * resolution - 1e-9)));
+    const int m = std::max(1, int(std::ceil(2 * flat * density - 1e-9)));
     std::vector<double> strip;  // offsets into the strip, increasing, ending exactly at radius
     for (int i = 1; i < k; ++i) strip.push_back(radius * std::tan(0.25 * kPi * i / k));
     strip.push_back(radius);

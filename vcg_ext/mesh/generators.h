@@ -16,8 +16,9 @@ SurfaceMesh makeTorus(double R = 1.0, double r = 0.4, int nu = 48, int nv = 24);
 /// A closed genus-2 surface (two fused tori), resolution controls the triangle count.
 SurfaceMesh makeDoubleTorus(int resolution = 40);
 /// Axis-aligned box of half-size `half` with edges rounded by `radius` (0 < radius < min half),
-/// smooth (no sharp edges), genus 0; `resolution` segments per unit length.
-SurfaceMesh makeRoundedBox(Vec3 half = Vec3(1.0, 0.8, 0.6), double radius = 0.2, int resolution = 24);
+/// smooth (no sharp edges), genus 0; `resolution` segments per unit length (denser when a
+/// small radius needs it: each quarter circle gets at least 4 segments, triangles stay fat).
+SurfaceMesh makeRoundedBox(Vec3 half = Vec3(1.0, 0.8, 0.6), double radius = 0.2, int resolution = 16);
 /// Open cylinder around z (two border loops), radius, height, nu around, nv along.
 SurfaceMesh makeOpenCylinder(double radius = 0.5, double height = 2.0, int nu = 48, int nv = 32);
 
