@@ -1,0 +1,103 @@
+#include "filter_parameters.h"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace fcql_meshlab {
+
+// Out-of-line definitions of the constants (needed in C++14 when they are odr-used).
+constexpr const char* FieldParameters::kSharpAngle;
+constexpr const char* FieldParameters::kUseExisting;
+constexpr double FieldParameters::kDefaultSharpAngle;
+constexpr double FieldParameters::kMinSharpAngle;
+constexpr double FieldParameters::kMaxSharpAngle;
+constexpr const char* TracingParameters::kAlpha;
+constexpr const char* TracingParameters::kK;
+constexpr const char* TracingParameters::kPhi;
+constexpr double TracingParameters::kDefaultAlpha;
+constexpr int TracingParameters::kDefaultK;
+constexpr double TracingParameters::kDefaultPhi;
+
+namespace {
+
+void requirePresent(const RichParameterList& list, const char* key) {
+  if (!list.hasParameter(QString(key)))
+    throw ParameterError(std::string("parameter '") + key + "' is missing");
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+double readFloatInRange(const RichParameterList& list, const char* key, double lo, double hi,
+                        const char* what) {
+  requirePresent(list, key);
+  const double value = list.getFloat(QString(key));
+  if (!std::isfinite(value) || value < lo || value > hi)
+    throw ParameterError(std::string("parameter '") + key + "' (" + what + ") is " +
+                         formatNumber(value) + ", must be between " + formatNumber(lo) +
+                         " and " + formatNumber(hi));
+  return value;
+}
+
+}  // namespace
+
+void addFieldParameters(RichParameterList& list) {
+  list.addParam(RichFloat(
+      QString(FieldParameters::kSharpAngle), float(FieldParameters::kDefaultSharpAngle),
+      "Sharp angle (degrees)",
+      "Edges whose dihedral angle (angle between the normals of the two faces) exceeds this "
+      "many degrees are sharp features; the cross field is aligned to feature lines made of "
+      "sharp edges. Valid range 0..180; 180 disables the alignment to sharp edges. Ignored when "
+      "the existing field is kept."));
+  list.addParam(RichBool(
+      QString(FieldParameters::kUseExisting), false, "Use existing field",
+      "If the mesh already has a per-face cross field (per-face curvature directions PD1/PD2, "
+      "e.g. loaded from a .ffield/.rosy file or left by a previous run), keep it and only "
+      "analyse it (singularities and ports). If the mesh has none, a new field is computed."));
+}
+
+FieldParameters readFieldParameters(const RichParameterList& list) {
+  FieldParameters p;
+  p.sharpAngleDeg = readFloatInRange(list, FieldParameters::kSharpAngle,
+                                     FieldParameters::kMinSharpAngle,
+                                     FieldParameters::kMaxSharpAngle, "sharp angle in degrees");
+  requirePresent(list, FieldParameters::kUseExisting);
+  p.useExisting = list.getBool(QString(FieldParameters::kUseExisting));
+  return p;
+}
+
+void addTracingParameters(RichParameterList& list) {
+  list.addParam(RichFloat(
+      QString(TracingParameters::kAlpha), float(TracingParameters::kDefaultAlpha),
+      "Alpha: drift penalty",
+      "Weight of the drift of a separatrix from the cross field in the tracing metric "
+      "(Eq. 1 of the paper). 0 gives geodesics; larger values follow the field more closely. "
+      "Must be >= 0."));
+  list.addParam(RichInt(
+      QString(TracingParameters::kK), TracingParameters::kDefaultK, "K: sinks per source",
+      "Number of candidate separatrices (sinks) traced from each source. Must be >= 1."));
+  list.addParam(RichFloat(
+      QString(TracingParameters::kPhi), float(TracingParameters::kDefaultPhi),
+      "Phi: auxiliary point angle (degrees)",
+      "Auxiliary points are inserted on a mesh edge until the angle it subtends at the "
+      "opposite vertex is below phi. Valid range 1..45 degrees."));
+}
+
+TracingParameters readTracingParameters(const RichParameterList& list) {
+  TracingParameters p;
+  p.alpha = readFloatInRange(list, TracingParameters::kAlpha, 0.0, 1e9, "drift penalty");
+  requirePresent(list, TracingParameters::kK);
+  p.k = list.getInt(QString(TracingParameters::kK));
+  if (p.k < 1)
+    throw ParameterError(std::string("parameter '") + TracingParameters::kK +
+                         "' (sinks per source) is " + std::to_string(p.k) + ", must be >= 1");
+  p.phiDeg = readFloatInRange(list, TracingParameters::kPhi, 1.0, 45.0,
+                              "auxiliary point angle in degrees");
+  return p;
+}
+
+}  // namespace fcql_meshlab

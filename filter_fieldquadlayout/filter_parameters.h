@@ -1,0 +1,54 @@
+// Parameters of the Field-Coherent Quad Layout filters (DESIGN.md §3, §4).
+//
+// Each group of parameters (one per pipeline stage) has: its keys (valid Python identifiers, as
+// they appear in .mlx scripts and as pymeshlab keywords), a function that adds the group to a
+// RichParameterList with labels and tooltips, and a function that reads and validates it. The
+// readers throw ParameterError with one line naming the parameter, its value and the valid
+// range: MeshLab passes out-of-range and unparsable values through (or silently replaces them
+// by the default), so validation is the filter's job. A filter made of several stages (e.g.
+// "All Steps") adds and reads several groups.
+#pragma once
+
+#include <common/filter_parameter/rich_parameter_list.h>
+
+#include <stdexcept>
+
+namespace fcql_meshlab {
+
+struct ParameterError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// ---- Compute Cross Field ------------------------------------------------------------------
+struct FieldParameters {
+  static constexpr const char* kSharpAngle = "sharp_angle";
+  static constexpr const char* kUseExisting = "use_existing";
+  static constexpr double kDefaultSharpAngle = 35.0;
+  static constexpr double kMinSharpAngle = 0.0;
+  static constexpr double kMaxSharpAngle = 180.0;
+
+  double sharpAngleDeg = kDefaultSharpAngle;  ///< dihedral angle above which an edge is a feature
+  bool useExisting = false;                   ///< keep the field already in PD1/PD2, if any
+};
+
+void addFieldParameters(RichParameterList& list);
+FieldParameters readFieldParameters(const RichParameterList& list);
+
+// ---- Trace Separatrices (filter 2; declared here so the later filters share one definition) --
+struct TracingParameters {
+  static constexpr const char* kAlpha = "alpha";
+  static constexpr const char* kK = "k";
+  static constexpr const char* kPhi = "phi";
+  static constexpr double kDefaultAlpha = 20.0;
+  static constexpr int kDefaultK = 10;
+  static constexpr double kDefaultPhi = 10.0;
+
+  double alpha = kDefaultAlpha;  ///< drift penalty of the metric (Eq. 1), >= 0
+  int k = kDefaultK;             ///< sinks per source, >= 1
+  double phiDeg = kDefaultPhi;   ///< auxiliary-point angle, 1..45 degrees
+};
+
+void addTracingParameters(RichParameterList& list);
+TracingParameters readTracingParameters(const RichParameterList& list);
+
+}  // namespace fcql_meshlab

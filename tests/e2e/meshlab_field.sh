@@ -1,0 +1,313 @@
+#!/usr/bin/env bash
+# End-to-end test of the MeshLab 2020.09 plugin, filter "Field-Coherent Quad Layout: Compute
+# Cross Field", run by Debian's meshlabserver through examples/compute_cross_field.mlx.
+#
+# Usage: meshlab_field.sh FCQL SHARED_DIR BUILD_DIR      (exit 0 pass, 1 fail, 77 skip)
+# Work files go to BUILD_DIR/e2e_meshlab_field (removed on success unless FCQL_KEEP_E2E=1).
+#
+# MeshLab 2020.09 has no option for a plugin folder, so the test builds an overlay prefix in the
+# build dir (MESHLAB.md): a copy of meshlabserver in PREFIX/bin, a symlink to
+# libmeshlab-common.so in PREFIX/lib/x86_64-linux-gnu/meshlab/, and plugins/ with symlinks to
+# Debian's io_base and to the freshly built libfilter_fieldquadlayout.so.
+#
+# Input meshes are written as OFF: Debian's meshlabserver 2020.09 aborts on any OBJ input (an
+# assert in vcglib's ImporterOBJ, exit 134), so the shared eight.obj is converted to OFF first.
+set -u
+fcql=${1:-}
+shared=${2:-}
+build=${3:-}
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+source_dir=$(cd "$here/../.." && pwd)
+script="$source_dir/examples/compute_cross_field.mlx"
+debian_lib=/usr/lib/x86_64-linux-gnu/meshlab
+
+skip() { echo "SKIP: $*"; exit 77; }
+[ -n "$build" ] && [ -d "$build" ] || skip "no build directory given"
+command -v xvfb-run >/dev/null || skip "xvfb-run is not installed"
+[ -x /usr/bin/meshlabserver ] || skip "Debian's meshlabserver is not installed"
+[ -f "$debian_lib/libmeshlab-common.so" ] || skip "libmeshlab-common.so is not installed"
+[ -f "$debian_lib/plugins/libio_base.so" ] || skip "MeshLab's io_base plugin is not installed"
+[ -f "$script" ] || { echo "FAIL: $script is missing"; exit 1; }
+
+work="$build/e2e_meshlab_field"
+rm -rf "$work"
+mkdir -p "$work"
+plugin=$(find "$build" -path "$work" -prune -o -type f -name libfilter_fieldquadlayout.so -print |
+         head -1)
+[ -n "$plugin" ] || skip "libfilter_fieldquadlayout.so not built in $build (FCQL_BUILD_PLUGIN=OFF?)"
+plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
+
+prefix="$work/prefix"
+plugins="$prefix/lib/x86_64-linux-gnu/meshlab/plugins"
+mkdir -p "$prefix/bin" "$plugins" "$work/xdg"
+chmod 700 "$work/xdg"
+cp /usr/bin/meshlabserver "$prefix/bin/"
+ln -s "$debian_lib/libmeshlab-common.so" "$prefix/lib/x86_64-linux-gnu/meshlab/"
+ln -s "$debian_lib/plugins/libio_base.so" "$plugins/"
+ln -s "$plugin" "$plugins/"
+
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# run_server LOG ARGS...: meshlabserver ARGS under a virtual X server, output into LOG;
+# returns meshlabserver's exit status.
+run_server() {
+  local log=$1
+  shift
+  XDG_CONFIG_HOME="$work/xdg" XDG_RUNTIME_DIR="$work/xdg" \
+    timeout 600 xvfb-run -a "$prefix/bin/meshlabserver" "$@" >"$log" 2>&1
+}
+
+# ply_faces FILE: the face count in a PLY header (ASCII or binary).
+ply_faces() { head -c 4096 "$1" | tr -d '\r' | grep -a '^element face ' | head -1 | awk '{print $3}'; }
+# off_faces FILE: the face count of an OFF file written by the helpers below.
+off_faces() { sed -n 2p "$1" | awk '{print $2}'; }
+# singularity_line LOG: the log line with the singularity counts.
+singularity_line() { grep -a 'Singularities: [0-9]* (by index: ' "$1" | head -1 | sed 's/^LOG: [0-9]* //'; }
+
+# write_cube FILE N: a closed cube of side N, N×N quads per side split in two triangles each,
+# welded vertices, outward orientation (counter-clockwise seen from outside).
+write_cube() {
+  awk -v n="$2" '
+    function id(x, y, z,   k) {
+      k = x "," y "," z
+      if (!(k in ids)) { ids[k] = nv; vx[nv] = x; vy[nv] = y; vz[nv] = z; nv++ }
+      return ids[k]
+    }
+    # side: origin (ox,oy,oz), axes U and V (unit lattice vectors) with U x V = outward normal.
+    function side(ox, oy, oz, ux, uy, uz, wx, wy, wz,   a, b, p00, p10, p11, p01) {
+      for (a = 0; a < n; a++) for (b = 0; b < n; b++) {
+        p00 = id(ox + a*ux + b*wx,         oy + a*uy + b*wy,         oz + a*uz + b*wz)
+        p10 = id(ox + (a+1)*ux + b*wx,     oy + (a+1)*uy + b*wy,     oz + (a+1)*uz + b*wz)
+        p11 = id(ox + (a+1)*ux + (b+1)*wx, oy + (a+1)*uy + (b+1)*wy, oz + (a+1)*uz + (b+1)*wz)
+        p01 = id(ox + a*ux + (b+1)*wx,     oy + a*uy + (b+1)*wy,     oz + a*uz + (b+1)*wz)
+        f[nf++] = p00 " " p10 " " p11
+        f[nf++] = p00 " " p11 " " p01
+      }
+    }
+    BEGIN {
+      nv = 0; nf = 0
+      side(0, 0, 0,  0, 1, 0,  1, 0, 0)   # z = 0, normal -z
+      side(0, 0, n,  1, 0, 0,  0, 1, 0)   # z = n, normal +z
+      side(0, 0, 0,  0, 0, 1,  0, 1, 0)   # x = 0, normal -x
+      side(n, 0, 0,  0, 1, 0,  0, 0, 1)   # x = n, normal +x
+      side(0, 0, 0,  1, 0, 0,  0, 0, 1)   # y = 0, normal -y
+      side(0, n, 0,  0, 0, 1,  1, 0, 0)   # y = n, normal +y
+      print "OFF"; print nv, nf, 0
+      for (i = 0; i < nv; i++) print vx[i], vy[i], vz[i]
+      for (i = 0; i < nf; i++) print 3, f[i]
+    }' >"$1"
+}
+
+# obj_to_off OBJ OFF: triangles of an OBJ (1-based, v/vt/vn allowed) as OFF (0-based).
+obj_to_off() {
+  awk '$1 == "v" { v[nv++] = $2 " " $3 " " $4 }
+       $1 == "f" { for (i = 2; i <= 4; i++) { split($i, p, "/"); c[i] = p[1] - 1 }
+                   f[nf++] = "3 " c[2] " " c[3] " " c[4] }
+       END { print "OFF"; print nv, nf, 0
+             for (i = 0; i < nv; i++) print v[i]
+             for (i = 0; i < nf; i++) print f[i] }' "$1" >"$2"
+}
+
+# nonzero_quality PLY: "x y z quality" of the vertices with a non-zero quality, from the binary
+# PLY that meshlabserver -m vq writes (vertex = float x y z quality, checked); nothing and
+# status 1 if the layout differs.
+nonzero_quality() {
+  local ply=$1 start nv
+  head -c 4096 "$ply" | grep -a -A5 '^element vertex' | tr '\n' ' ' |
+    grep -q 'property float x property float y property float z property float quality element face' ||
+    return 1
+  start=$(( $(grep -abo 'end_header' "$ply" | head -1 | cut -d: -f1) + 11 ))
+  nv=$(head -c 4096 "$ply" | grep -a '^element vertex' | awk '{print $3}')
+  od -A n -v -t f4 -j "$start" -N $((nv * 16)) "$ply" | tr -s ' \t' '\n' | grep -v '^$' |
+    paste - - - - | awk '$4 != 0 { print $1, $2, $3, $4 }'
+}
+
+# check_corner_quality NAME PLY COUNT "XS" "YS" "ZS": exactly COUNT vertices have a non-zero
+# quality, all equal to 1 (index +1/4), with x in XS, y in YS, z in ZS (space-separated lists).
+check_corner_quality() {
+  local name=$1 ply=$2 count=$3 q n bad
+  if ! q=$(nonzero_quality "$ply"); then
+    fail "$name: unexpected vertex layout in $ply"
+    return
+  fi
+  n=$(printf '%s\n' "$q" | grep -c .)
+  bad=$(printf '%s\n' "$q" | awk -v xs="$4" -v ys="$5" -v zs="$6" '
+    function in_list(v, list,   a, i, k) { k = split(list, a, " "); for (i = 1; i <= k; i++) if (v == a[i]) return 1; return 0 }
+    NF && !($4 == 1 && in_list($1, xs) && in_list($2, ys) && in_list($3, zs))' | wc -l)
+  [ "$n" = "$count" ] && [ "$bad" = 0 ] ||
+    fail "$name: expected quality 1 on $count corners only, got: $(printf '%s\n' "$q" | tr '\n' ';')"
+}
+
+# expect_success NAME INPUT.off: runs the example script; exit 0, log has the counts, the
+# output has the same number of faces. Leaves the log in $work/NAME.log.
+expect_success() {
+  local name=$1 input=$2 log="$work/$1.log" out="$work/$1_out.ply"
+  run_server "$log" -i "$input" -o "$out" -m vq -s "$script"
+  local status=$?
+  if [ $status -ne 0 ]; then
+    fail "$name: meshlabserver exited with $status"
+    sed 's/^/    /' "$log" | tail -20
+    return 1
+  fi
+  local line
+  line=$(singularity_line "$log")
+  [ -n "$line" ] || fail "$name: the log does not give the singularity counts"
+  echo "$name: $line"
+  [ -s "$out" ] || { fail "$name: $out was not written"; return 1; }
+  local nin nout
+  nin=$(off_faces "$input")
+  nout=$(ply_faces "$out")
+  [ "$nin" = "$nout" ] || fail "$name: output has '$nout' faces, input $nin"
+  head -c 4096 "$out" | grep -aq '^property float quality' ||
+    fail "$name: the output has no per-vertex quality (singularity index)"
+  return 0
+}
+
+# expect_failure NAME INPUT SCRIPT PATTERN: meshlabserver exits non-zero, without crashing, and
+# its output matches PATTERN (the reason).
+expect_failure() {
+  local name=$1 input=$2 mlx=$3 pattern=$4 log="$work/$1.log" out="$work/$1_out.ply"
+  run_server "$log" -i "$input" -o "$out" -m vq -s "$mlx"
+  local status=$?
+  [ $status -ne 0 ] || fail "$name: meshlabserver exited with 0"
+  [ $status -ne 134 ] && [ $status -ne 139 ] || fail "$name: meshlabserver crashed (status $status)"
+  grep -aq "Compute Cross Field failed: " "$log" || fail "$name: no failure reason in the output"
+  grep -aqE "$pattern" "$log" || fail "$name: the output does not match '$pattern'"
+  echo "$name: exit $status, $(grep -a 'Compute Cross Field failed: ' "$log" | head -1 | sed 's/^LOG: [0-9]* //')"
+}
+
+# ---- 1. a generated cube: 8 singularities of index +1/4 at the corners ---------------------
+write_cube "$work/cube.off" 4
+if expect_success cube "$work/cube.off"; then
+  line=$(singularity_line "$work/cube.log")
+  case "$line" in
+    *"(by index: 1/4: 8)"*) ;;
+    *) fail "cube: expected 8 singularities of index 1/4, got: $line" ;;
+  esac
+  case "$line" in
+    *"index sum: 2 "*) ;;
+    *) fail "cube: the index sum is not 2 (Poincare-Hopf): $line" ;;
+  esac
+  # Per-vertex quality = index x 4: 1 at the 8 corners, 0 elsewhere.
+  check_corner_quality cube "$work/cube_out.ply" 8 "0 4" "0 4" "0 4"
+fi
+
+# ---- 2. keeping the field: a second run with use_existing=true analyses the stored PD1/PD2 ----
+sed -e 's|</FilterScript>||' "$script" >"$work/twice.mlx"
+sed -n '/<filter /,/<\/filter>/p' "$script" |
+  sed 's|name="use_existing" value="false"|name="use_existing" value="true"|' >>"$work/twice.mlx"
+echo '</FilterScript>' >>"$work/twice.mlx"
+grep -q 'name="use_existing" value="true"' "$work/twice.mlx" || fail "could not write twice.mlx"
+if run_server "$work/twice.log" -i "$work/cube.off" -o "$work/twice_out.ply" -s "$work/twice.mlx"; then
+  grep -aq 'kept the field already on the mesh' "$work/twice.log" ||
+    fail "use_existing: the second run did not keep the stored field"
+  n=$(grep -ac 'Singularities: [0-9]* (by index: ' "$work/twice.log")
+  distinct=$(grep -a 'Singularities: [0-9]* (by index: ' "$work/twice.log" | sed 's/^LOG: [0-9]* //' | sort -u | wc -l)
+  [ "$n" -ge 2 ] && [ "$distinct" -eq 1 ] ||
+    fail "use_existing: the stored field does not give the same singularities ($n lines, $distinct distinct)"
+else
+  fail "use_existing: meshlabserver exited with $?"
+  tail -20 "$work/twice.log"
+fi
+
+# ---- 3. deleted elements and a border: MeshLab deletes the top of the cube first -------------
+# (needs Debian's filter_func and filter_select plugins). The filter must map indices around the
+# deleted faces and vertices: an open box has the 4 bottom corners as +1/4 singularities, its
+# top rim is a straight border (index sum = Euler characteristic 1), and 160 faces remain.
+if [ -f "$debian_lib/plugins/libfilter_func.so" ] && [ -f "$debian_lib/plugins/libfilter_select.so" ]; then
+  ln -s "$debian_lib/plugins/libfilter_func.so" "$debian_lib/plugins/libfilter_select.so" "$plugins/"
+  {
+    echo '<!DOCTYPE FilterScript>'
+    echo '<FilterScript>'
+    echo ' <filter name="Conditional Face Selection">'
+    echo '  <Param type="RichString" name="condSelect" value="(z0 &gt; 3.5) &amp;&amp; (z1 &gt; 3.5) &amp;&amp; (z2 &gt; 3.5)"/>'
+    echo ' </filter>'
+    echo ' <filter name="Delete Selected Faces and Vertices"/>'
+    sed -n '/<filter /,/<\/filter>/p' "$script"
+    echo '</FilterScript>'
+  } >"$work/open_box.mlx"
+  if run_server "$work/open_box.log" -i "$work/cube.off" -o "$work/open_box_out.ply" -m vq -s "$work/open_box.mlx"; then
+    grep -aq 'Deleted 32 faces' "$work/open_box.log" || fail "open_box: MeshLab did not delete the top"
+    line=$(singularity_line "$work/open_box.log")
+    echo "open_box: $line"
+    case "$line" in
+      *"(by index: 1/4: 4)"*"index sum: 1 "*) ;;
+      *) fail "open_box: expected 4 singularities of index 1/4 and index sum 1, got: $line" ;;
+    esac
+    grep -aq 'Mesh: 160 faces, 89 vertices, genus 0, 1 border loops' "$work/open_box.log" ||
+      fail "open_box: the converted mesh is not 160 faces, 89 vertices, 1 border loop"
+    [ "$(ply_faces "$work/open_box_out.ply")" = 160 ] || fail "open_box: the output does not have 160 faces"
+    check_corner_quality open_box "$work/open_box_out.ply" 4 "0 4" "0 4" "0"
+  else
+    fail "open_box: meshlabserver exited with non-zero status"
+    tail -20 "$work/open_box.log"
+  fi
+else
+  echo "note: MeshLab's filter_func/filter_select plugins are absent, open-box check skipped"
+fi
+
+# ---- 4. a shared real mesh ------------------------------------------------------------------
+if [ -n "$shared" ] && [ -f "$shared/data/meshes/eight.obj" ]; then
+  obj_to_off "$shared/data/meshes/eight.obj" "$work/eight.off"
+  if expect_success eight "$work/eight.off"; then
+    line=$(singularity_line "$work/eight.log")
+    # Genus 2: the interior indices sum to the Euler characteristic -2.
+    case "$line" in
+      *"index sum: -2 "*) ;;
+      *) fail "eight: the index sum is not -2: $line" ;;
+    esac
+    grep -aq 'genus 2' "$work/eight.log" || fail "eight: the log does not say genus 2"
+    # Same core, same mesh: the command-line tool (if built) finds the same singularities.
+    if [ -x "$fcql" ] && "$fcql" field "$shared/data/meshes/eight.obj" --out "$work/eight_cli" --quiet \
+         >/dev/null 2>&1 && [ -f "$work/eight_cli/stats.json" ]; then
+      json_int() { grep -o "\"$2\": *-\?[0-9]*" "$1" | head -1 | grep -o -- '-\?[0-9]*$'; }
+      cli_s=$(json_int "$work/eight_cli/stats.json" singularities)
+      cli_p=$(json_int "$work/eight_cli/stats.json" ports)
+      case "$line" in
+        "Singularities: $cli_s "*"ports: $cli_p,"*) ;;
+        *) fail "eight: the plugin and fcql disagree (fcql: $cli_s singularities, $cli_p ports; plugin: $line)" ;;
+      esac
+    else
+      echo "note: the fcql tool is not available, plugin/CLI comparison skipped"
+    fi
+  fi
+else
+  echo "note: $shared/data/meshes/eight.obj is absent, shared-mesh check skipped"
+fi
+
+# ---- 5. an out-of-range parameter: non-zero exit and the reason --------------------------------
+sed 's|name="sharp_angle" value="[^"]*"|name="sharp_angle" value="500"|' "$script" >"$work/bad_angle.mlx"
+grep -q 'value="500"' "$work/bad_angle.mlx" || fail "could not write bad_angle.mlx"
+expect_failure bad_angle "$work/cube.off" "$work/bad_angle.mlx" "sharp_angle.*500.*between 0 and 180"
+[ ! -e "$work/bad_angle_out.ply" ] || fail "bad_angle: an output was written after the failure"
+
+# ---- 6. a non-manifold mesh: three triangles sharing one edge ------------------------------
+cat >"$work/fin.off" <<'EOF'
+OFF
+5 3 0
+0 0 0
+1 0 0
+0.5 1 0
+0.5 -1 0.2
+0.5 0 1
+3 0 1 2
+3 1 0 3
+3 0 1 4
+EOF
+expect_failure non_manifold "$work/fin.off" "$script" "non-manifold|orientation"
+
+# ---- 7. a point cloud: no faces -----------------------------------------------------------------
+printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' >"$work/points.off"
+run_server "$work/points.log" -i "$work/points.off" -o "$work/points_out.ply" -s "$script"
+status=$?
+[ $status -ne 0 ] || fail "points: meshlabserver exited with 0 on a mesh without faces"
+[ $status -ne 134 ] && [ $status -ne 139 ] || fail "points: meshlabserver crashed (status $status)"
+
+if [ $failures -ne 0 ]; then
+  echo "$failures failure(s); logs in $work"
+  exit 1
+fi
+echo "PASS: meshlab_field"
+[ -n "${FCQL_KEEP_E2E:-}" ] || rm -rf "$work"
+exit 0
