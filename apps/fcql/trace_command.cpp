@@ -7,6 +7,8 @@
 #include "tracing/separatrix_graph.h"
 
 #include <chrono>
+#include <iostream>
+#include <unistd.h>
 #include <stdexcept>
 
 namespace fcql {
@@ -29,7 +31,18 @@ TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, 
   progress(quiet, "graph G: " + std::to_string(t.graph->numNodes()) + " nodes, " + std::to_string(t.graph->numArcs()) +
                       " arcs; tracing from " + std::to_string(t.graph->ports().size()) + " ports (k " +
                       std::to_string(params.k) + ")");
-  t.h = traceCandidateSeparatrices(*t.graph);
+  // Progress: a line rewritten in place on a terminal, a line per quarter otherwise.
+  const bool terminal = isatty(2);
+  const int step = terminal ? 5 : 25;
+  int lastPercent = -step;
+  t.h = traceCandidateSeparatrices(*t.graph, [&](int done, int total) {
+    int percent = total ? 100 * done / total : 100;
+    if (quiet || percent - lastPercent < step || percent == 100) return;
+    lastPercent = percent;
+    std::cerr << "fcql: tracing " << percent << "% (" << done << "/" << total << " ports)" << (terminal ? "\r" : "\n")
+              << std::flush;
+  });
+  if (!quiet && terminal) std::cerr << std::string(60, ' ') << "\r" << std::flush;
   auto traced = std::chrono::steady_clock::now();
   t.graphSeconds = std::chrono::duration<double>(built - start).count();
   t.tracingSeconds = std::chrono::duration<double>(traced - built).count();

@@ -36,12 +36,12 @@ SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vect
   return h;
 }
 
-SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph) {
+SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph, const ProgressCallback& progress) {
   std::vector<int> ports(graph.ports().size());
   std::iota(ports.begin(), ports.end(), 0);
   SearchOptions options;
   options.maxSinks = graph.parameters().k;
-  return buildSeparatrixGraph(graph, traceFromPorts(graph, ports, options));
+  return buildSeparatrixGraph(graph, traceFromPorts(graph, ports, options, progress));
 }
 
 void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h) {

@@ -34,7 +34,7 @@ struct SeparatrixGraph {
 SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vector<std::vector<TracedPath>>& searches);
 
 /// Runs a search from every port (k sinks, no barriers) and builds H.
-SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph);
+SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph, const ProgressCallback& progress = nullptr);
 
 /// Classifies every crossing between the arcs of `h` (fills tangentialPairs/orthogonalPairs).
 void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h);

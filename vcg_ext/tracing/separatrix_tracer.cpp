@@ -335,24 +335,28 @@ std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, cons
 }
 
 std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
-                                                    const SearchOptions& options) {
+                                                    const SearchOptions& options, const ProgressCallback& progress) {
   std::vector<std::vector<TracedPath>> results(ports.size());
   int threads = graph.parameters().threads > 0 ? graph.parameters().threads
                                                : int(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::max(1, std::min<int>(threads, int(ports.size())));
   std::atomic<std::size_t> next{0};
-  auto work = [&]() {
+  std::atomic<int> done{0};
+  auto work = [&](bool reports) {
     Search search(graph);
     for (;;) {
       std::size_t i = next.fetch_add(1);
       if (i >= ports.size()) break;
       results[i] = search.run(ports[i], options);
+      int finished = ++done;
+      if (reports && progress) progress(finished, int(ports.size()));
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
+  work(true);  // only the calling thread reports, so callbacks need no locking
   for (auto& th : pool) th.join();
+  if (progress) progress(int(ports.size()), int(ports.size()));
   return results;
 }
 

@@ -7,9 +7,13 @@
 #include "tracing/geodesic_graph.h"
 #include "tracing/traced_path.h"
 
+#include <functional>
 #include <vector>
 
 namespace fcql {
+
+/// Called from the calling thread as searches complete: (searches done, searches in all).
+using ProgressCallback = std::function<void(int done, int total)>;
 
 /// Separatrices that searches must respect, indexed per face for fast lookups.
 class BarrierSet {
@@ -49,6 +53,7 @@ std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, cons
 /// Searches from each port in `ports`, in parallel (graph.parameters().threads); result i
 /// belongs to ports[i], identical whatever the number of threads.
 std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
-                                                    const SearchOptions& options);
+                                                    const SearchOptions& options,
+                                                    const ProgressCallback& progress = nullptr);
 
 }  // namespace fcql
