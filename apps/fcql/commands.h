@@ -7,6 +7,8 @@
 #include "mesh/surface_mesh.h"
 #include "stats_json.h"
 #include "layout/patch_layout.h"
+#include "quadrangulation/quad_mesh.h"
+#include "quadrangulation/side_lengths.h"
 #include "tracing/separatrix_graph.h"
 
 #include <memory>
@@ -56,7 +58,18 @@ struct LayoutStage {
 LayoutParameters readLayoutParameters(const CommandLine& cl);
 LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const LayoutParameters& params, StatsJson& stats, bool quiet);
 
+/// What the quadrangulation stage produced.
+struct QuadStage {
+  PatchGraph graph;
+  SideLengths lengths;
+  QuadMesh mesh;
+  QuadMeshReport report;
+  double seconds = 0;
+};
+QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const CommandLine& cl, StatsJson& stats, bool quiet);
+
 int fieldCommand(int argc, char** argv);
+int quadCommand(int argc, char** argv);
 int layoutCommand(int argc, char** argv);
 int traceCommand(int argc, char** argv);
 

@@ -22,6 +22,9 @@ const char* kUsage =
     "  layout MESH|--example NAME [field and trace options] [--ilp-time-limit 60] --out DIR\n"
     "        select separatrices (0-1 program, solving cycle, t-junctions, borders), cut the\n"
     "        surface into patches; adds DIR/separatrices.obj and DIR/layout.ply\n"
+    "  run MESH|--example NAME [all options above] [--scale 0.02 | --target-faces N] --out DIR\n"
+    "        the whole pipeline down to the quad mesh (side-length ILP, patch sampling);\n"
+    "        adds DIR/quad.obj (`quad` is the same command)\n"
     "\n"
     "MESH is a triangle mesh in OBJ, PLY or OFF. Examples the tool generates itself:\n"
     "  sphere, torus, double_torus, rounded_box, open_cylinder\n";
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
     if (command == "field") return fcql::fieldCommand(argc, argv);
     if (command == "trace") return fcql::traceCommand(argc, argv);
     if (command == "layout") return fcql::layoutCommand(argc, argv);
+    if (command == "quad" || command == "run") return fcql::quadCommand(argc, argv);
     std::cerr << "fcql: error: unknown command '" << command << "' (see fcql --help)\n";
     return 2;
   } catch (const fcql::UsageError& e) {

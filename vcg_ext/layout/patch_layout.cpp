@@ -390,11 +390,14 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
       int p = out.patch[t];
       PatchReport& rep = out.patches[p];
       rep.boundaryLoops += 1;
+      const bool recordLoop = rep.boundaryLoops == 1;
+      std::vector<char> cornerAtEnd;
       int he = t * 3 + i;
       for (int guard = 0; guard < 3 * nt + 8 && he >= 0 && !visited[he]; ++guard) {
         visited[he] = 1;
         int tt = he / 3, ii = he % 3;
         onBoundary[p][out.triangles[tt][ii]] = 1;
+        if (recordLoop) rep.loop.push_back(out.triangles[tt][ii]);
         int next = nextBoundary(tt, ii);
         if (next < 0) {
           rep.problem = "its boundary is not a closed loop";
@@ -406,11 +409,18 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         double p1 = out.edgeParam[tt][ii][1], p2 = out.edgeParam[next / 3][next % 3][0];
         bool jump = c1 >= 0 && c1 == c2 && std::abs(p1 - p2) > 1e-6;
         if (jump && closedLoopLength[c1] > 0 && std::abs(std::abs(p1 - p2) - closedLoopLength[c1]) < 1e-6) jump = false;
-        if (c1 != c2 || jump || alwaysCorner(b)) {
+        bool isCorner = c1 != c2 || jump || alwaysCorner(b);
+        if (isCorner) {
           rep.corners += 1;
           out.corner[b] = 1;
         }
+        if (recordLoop) cornerAtEnd.push_back(isCorner);
         he = next;
+      }
+      if (recordLoop) {
+        const std::size_t m = cornerAtEnd.size();
+        rep.loopCorner.assign(rep.loop.size(), 0);
+        for (std::size_t k = 0; k < m && k < rep.loop.size(); ++k) rep.loopCorner[(k + 1) % rep.loop.size()] = cornerAtEnd[k];
       }
     }
   for (int p = 0; p < np; ++p) {

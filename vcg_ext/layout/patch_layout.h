@@ -26,6 +26,10 @@ struct PatchReport {
   bool isDisk = false;
   bool valid = false;  ///< a disk with 4 corners
   std::string problem; ///< why not valid
+  /// The first boundary loop, patch on the left: vertex ids in order, and per position 1 if
+  /// that vertex is a corner of this patch.
+  std::vector<int> loop;
+  std::vector<char> loopCorner;
 };
 
 struct PatchLayout {

@@ -1,0 +1,21 @@
+// Sampling each quad patch with its integer grid (§4.5).
+//
+// Each patch (a disk with 4 corners, cut out of the layout's refined triangle mesh) is mapped
+// to the rectangle [0, W] × [0, H] of its integer side lengths: the boundary by arc length
+// along each segment (so that a segment shared by two patches maps to the same points from
+// both sides), the interior by mean-value coordinates (Floater), which keep the map one-to-one
+// inside a convex domain. Grid points inside are located in the mapped triangles and placed
+// on the surface; points on the sides are taken once per segment and shared, so the quads of
+// neighbouring patches meet conformingly.
+#pragma once
+
+#include "quadrangulation/quad_mesh.h"
+#include "quadrangulation/side_lengths.h"
+
+namespace fcql {
+
+/// Throws std::runtime_error if a patch's opposite sides differ (a zero chain left) or its
+/// mapping fails.
+QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths);
+
+}  // namespace fcql

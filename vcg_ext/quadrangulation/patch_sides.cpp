@@ -1,0 +1,75 @@
+#include "quadrangulation/patch_sides.h"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+namespace fcql {
+
+PatchGraph buildPatchGraph(const PatchLayout& layout) {
+  PatchGraph g;
+  g.patches.resize(layout.numPatches());
+  std::map<std::pair<int, int>, int> segmentOfEdge;  // undirected first edge of a segment -> id
+  for (int p = 0; p < layout.numPatches(); ++p) {
+    const PatchReport& rep = layout.patches[p];
+    if (!rep.valid)
+      throw std::runtime_error("patch " + std::to_string(p) + " cannot be quadrangulated: " + rep.problem);
+    const int m = int(rep.loop.size());
+    int first = -1;
+    for (int k = 0; k < m && first < 0; ++k)
+      if (rep.loopCorner[k]) first = k;
+    if (first < 0) throw std::runtime_error("patch " + std::to_string(p) + " has no corner on its boundary");
+    PatchSides& ps = g.patches[p];
+    int side = -1;
+    std::vector<int> chain;
+    auto closeSegment = [&]() {
+      if (chain.size() < 2) return;
+      // The same key from both sides: the smaller of the chain's two end edges.
+      const std::size_t last = chain.size() - 1;
+      auto key = std::min(std::make_pair(std::min(chain[0], chain[1]), std::max(chain[0], chain[1])),
+                          std::make_pair(std::min(chain[last], chain[last - 1]), std::max(chain[last], chain[last - 1])));
+      auto it = segmentOfEdge.find(key);
+      if (it == segmentOfEdge.end()) {
+        LayoutSegment s;
+        s.vertices = chain;
+        for (std::size_t i = 1; i < chain.size(); ++i)
+          s.length += (layout.positions[chain[i]] - layout.positions[chain[i - 1]]).norm();
+        s.patchA = p;
+        int id = int(g.segments.size());
+        g.segments.push_back(std::move(s));
+        segmentOfEdge[key] = id;
+        ps.sides[side].push_back({id, false});
+      } else {
+        LayoutSegment& s = g.segments[it->second];
+        std::vector<int> reversed(chain.rbegin(), chain.rend());
+        if (s.vertices != reversed || s.patchB >= 0)
+          throw std::runtime_error("patch " + std::to_string(p) + ": its sides do not match its neighbour's");
+        s.patchB = p;
+        ps.sides[side].push_back({it->second, true});
+      }
+      chain.clear();
+    };
+    for (int step = 0; step <= m; ++step) {
+      const int k = (first + step) % m;
+      const int v = rep.loop[k];
+      if (!chain.empty()) chain.push_back(v);
+      if (step == m) {  // back at the first corner
+        closeSegment();
+        break;
+      }
+      const bool isPatchCorner = rep.loopCorner[k];
+      if (isPatchCorner || layout.corner[v]) {
+        closeSegment();
+        if (isPatchCorner) {
+          if (++side > 3) throw std::runtime_error("patch " + std::to_string(p) + " has more than 4 corners");
+          ps.corners[side] = v;
+        }
+        chain.assign(1, v);
+      }
+    }
+    if (side != 3) throw std::runtime_error("patch " + std::to_string(p) + " does not have 4 corners");
+  }
+  return g;
+}
+
+}  // namespace fcql

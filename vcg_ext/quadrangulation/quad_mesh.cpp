@@ -1,0 +1,73 @@
+#include "quadrangulation/quad_mesh.h"
+
+#include <map>
+#include <sstream>
+
+namespace fcql {
+
+QuadMeshReport checkQuadMesh(const QuadMesh& mesh) {
+  QuadMeshReport r;
+  const int nv = mesh.numVertices();
+  std::map<std::pair<int, int>, int> directed;  // (a,b) -> uses
+  std::vector<int> valence(nv, 0), uses(nv, 0);
+  for (const auto& q : mesh.quads)
+    for (int i = 0; i < 4; ++i) {
+      int a = q[i], b = q[(i + 1) % 4];
+      if (a < 0 || a >= nv || a == b) {
+        r.problem = "a quad has an invalid or repeated vertex";
+        return r;
+      }
+      if (++directed[{a, b}] > 1) {
+        r.problem = "the edge " + std::to_string(a) + "-" + std::to_string(b) + " is used twice in the same direction";
+        return r;
+      }
+      uses[a] += 1;
+    }
+  long edges = 0;
+  std::map<int, int> borderNext;
+  for (const auto& e : directed) {
+    bool twin = directed.count({e.first.second, e.first.first}) > 0;
+    if (!twin || e.first.first < e.first.second) ++edges;
+    valence[e.first.first] += 1;
+    if (!twin) {
+      valence[e.first.second] += 1;  // border edges count once at each end
+      if (borderNext.count(e.first.first)) {
+        r.problem = "vertex " + std::to_string(e.first.first) + " is non-manifold (two border fans)";
+        return r;
+      }
+      borderNext[e.first.first] = e.first.second;
+    }
+  }
+  std::map<int, char> seen;
+  for (const auto& b : borderNext) {
+    if (seen.count(b.first)) continue;
+    ++r.borderLoops;
+    for (int v = b.first; !seen.count(v); v = borderNext.count(v) ? borderNext[v] : b.first) seen[v] = 1;
+  }
+  int used = 0;
+  for (int v = 0; v < nv; ++v) {
+    if (uses[v] == 0) {
+      ++r.unusedVertices;
+      continue;
+    }
+    ++used;
+    bool border = borderNext.count(v) > 0;
+    if (!border && valence[v] != 4) ++r.irregularVertices;
+    if (border && valence[v] != 3 && valence[v] != 2) ++r.irregularVertices;
+  }
+  r.eulerCharacteristic = used - int(edges) + mesh.numQuads();
+  r.genus = (2 - r.eulerCharacteristic - r.borderLoops) / 2;
+  r.manifold = true;
+  return r;
+}
+
+std::string quadMeshToObj(const QuadMesh& mesh) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "# field-coherent quad mesh: " << mesh.numVertices() << " vertices, " << mesh.numQuads() << " quads\n";
+  for (const auto& p : mesh.positions) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const auto& q : mesh.quads) out << "f " << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+  return out.str();
+}
+
+}  // namespace fcql

@@ -1,0 +1,36 @@
+// QuadMesh: the output of the pipeline, a pure quad mesh, with checks of its structure.
+#pragma once
+
+#include "mesh/surface_mesh.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fcql {
+
+struct QuadMesh {
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 4>> quads;  ///< counter-clockwise about the outward normal
+  std::vector<int> quadPatch;             ///< layout patch each quad comes from
+
+  int numVertices() const { return int(positions.size()); }
+  int numQuads() const { return int(quads.size()); }
+};
+
+struct QuadMeshReport {
+  bool manifold = false;       ///< every edge in ≤ 2 quads, consistently oriented; vertex fans single
+  int eulerCharacteristic = 0;
+  int borderLoops = 0;
+  int genus = 0;
+  int irregularVertices = 0;   ///< interior valence ≠ 4, border valence ∉ {2 at corners, 3}
+  int unusedVertices = 0;
+  std::string problem;
+};
+
+QuadMeshReport checkQuadMesh(const QuadMesh& mesh);
+
+/// OBJ text with `v` and `f a b c d` lines only.
+std::string quadMeshToObj(const QuadMesh& mesh);
+
+}  // namespace fcql

@@ -1,0 +1,29 @@
+// Integer side lengths for the patches (§4.4): one integer n_s ≥ 1 per segment, as close as
+// possible (L1) to its ideal subdivision length(s) / targetEdgeLength, with the opposite
+// sides of every patch equal: exactly where neither side carries a t-junction, in an L1
+// sense (heavily weighted) where one does. Solved with lp_solve.
+#pragma once
+
+#include "layout/integer_program.h"
+#include "quadrangulation/patch_sides.h"
+
+#include <string>
+#include <vector>
+
+namespace fcql {
+
+struct SideLengths {
+  std::vector<int> segments;          ///< n_s per segment
+  std::vector<int> inconsistentPatches;  ///< patches whose opposite sides still differ (zero chains)
+  IntegerProgram::Status status = IntegerProgram::Status::Optimal;
+  std::string message;
+  double seconds = 0;
+
+  /// Subdivisions along side k of patch p.
+  int sideLength(const PatchGraph& g, int p, int k) const;
+};
+
+/// Throws std::runtime_error if lp_solve finds no solution.
+SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds);
+
+}  // namespace fcql
