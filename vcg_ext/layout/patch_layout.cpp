@@ -397,7 +397,7 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         visited[he] = 1;
         int tt = he / 3, ii = he % 3;
         onBoundary[p][out.triangles[tt][ii]] = 1;
-        if (recordLoop) rep.loop.push_back(out.triangles[tt][ii]);
+        if (recordLoop) rep.loop.push_back(out.triangles[tt][ii]), rep.loopTriangle.push_back(tt);
         int next = nextBoundary(tt, ii);
         if (next < 0) {
           rep.problem = "its boundary is not a closed loop";

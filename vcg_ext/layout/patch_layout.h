@@ -30,6 +30,9 @@ struct PatchReport {
   /// that vertex is a corner of this patch.
   std::vector<int> loop;
   std::vector<char> loopCorner;
+  /// Per position: the triangle whose edge leaves loop[k] along the boundary (tells apart the
+  /// copies of a vertex that the loop meets twice, e.g. on a cut through a cylinder).
+  std::vector<int> loopTriangle;
 };
 
 struct PatchLayout {

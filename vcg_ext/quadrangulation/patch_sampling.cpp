@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -53,6 +54,11 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       segmentSamples[s].push_back(q.numVertices() - 1);
     }
   }
+  // Half-edges of the layout mesh, to join the triangles of a patch across inner edges.
+  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  std::unordered_map<std::uint64_t, int> halfEdge;
+  for (int t = 0; t < int(layout.triangles.size()); ++t)
+    for (int i = 0; i < 3; ++i) halfEdge[key(layout.triangles[t][i], layout.triangles[t][(i + 1) % 3])] = t * 3 + i;
   // Triangles of each patch.
   std::vector<std::vector<int>> trianglesOf(layout.numPatches());
   for (int t = 0; t < int(layout.triangles.size()); ++t) trianglesOf[layout.patch[t]].push_back(t);
@@ -71,7 +77,43 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         default: return at(0, H - c);
       }
     };
-    // UV of the patch's layout vertices on its boundary.
+    // Wedges: the copies of a vertex inside the patch, separated by its boundary (a vertex
+    // the boundary loop meets twice, as on a cut through a cylinder, has two).
+    const auto& tris = trianglesOf[p];
+    std::unordered_map<int, int> slotOf;  // t*3+c -> local slot
+    std::vector<int> parent;
+    for (int t : tris)
+      for (int c = 0; c < 3; ++c) {
+        slotOf[t * 3 + c] = int(parent.size());
+        parent.push_back(int(parent.size()));
+      }
+    auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    auto cornerIn = [&](int t, int v) {
+      for (int c = 0; c < 3; ++c)
+        if (layout.triangles[t][c] == v) return c;
+      return -1;
+    };
+    for (int t : tris)
+      for (int i = 0; i < 3; ++i) {
+        if (layout.edgeCurve[t][i] != -1) continue;
+        int a = layout.triangles[t][i], b = layout.triangles[t][(i + 1) % 3];
+        auto it = halfEdge.find(key(b, a));
+        if (it == halfEdge.end()) continue;
+        int t2 = it->second / 3;
+        parent[find(slotOf[t * 3 + i])] = find(slotOf[t2 * 3 + cornerIn(t2, a)]);
+        parent[find(slotOf[t * 3 + (i + 1) % 3])] = find(slotOf[t2 * 3 + cornerIn(t2, b)]);
+      }
+    auto wedge = [&](int t, int c) { return find(slotOf[t * 3 + c]); };
+    const PatchReport& rep = layout.patches[p];
+    const int loopSize = int(rep.loop.size());
+    auto loopWedge = [&](int k) {
+      k %= loopSize;
+      return wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k]));
+    };
+    // UV of the boundary wedges.
     std::unordered_map<int, Vec2> uvOf;
     auto sideUv = [&](int k, double c) {
       switch (k) {
@@ -94,41 +136,43 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         double total = seg.length, run = 0;
         for (std::size_t i = 0; i < chain.size(); ++i) {
           if (i > 0) run += (layout.positions[chain[i]] - layout.positions[chain[i - 1]]).norm();
-          uvOf[chain[i]] = sideUv(k, offset + (total > 0 ? n * run / total : 0));
+          uvOf[loopWedge(ss.loopStart + int(i))] = sideUv(k, offset + (total > 0 ? n * run / total : 0));
         }
         offset += n;
       }
     }
-    // Mean-value mapping of the interior vertices.
+    // Mean-value mapping of the interior wedges.
     std::unordered_map<int, int> interior;
-    std::vector<int> interiorVertex;
-    for (int t : trianglesOf[p])
-      for (int v : layout.triangles[t])
-        if (!uvOf.count(v) && !interior.count(v)) {
-          interior[v] = int(interiorVertex.size());
-          interiorVertex.push_back(v);
+    std::vector<int> interiorWedge;
+    for (int t : tris)
+      for (int c = 0; c < 3; ++c) {
+        int w = wedge(t, c);
+        if (!uvOf.count(w) && !interior.count(w)) {
+          interior[w] = int(interiorWedge.size());
+          interiorWedge.push_back(w);
         }
-    const int ni = int(interiorVertex.size());
+      }
+    const int ni = int(interiorWedge.size());
     if (ni > 0) {
       std::vector<Eigen::Triplet<double>> entries;
       Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
       std::vector<double> diagonal(ni, 0);
-      for (int t : trianglesOf[p]) {
+      for (int t : tris) {
         const auto& tri = layout.triangles[t];
         for (int c = 0; c < 3; ++c) {
-          int a = tri[c];
-          auto it = interior.find(a);
+          auto it = interior.find(wedge(t, c));
           if (it == interior.end()) continue;
-          const Vec3& pa = layout.positions[a];
+          const Vec3& pa = layout.positions[tri[c]];
           for (int other : {1, 2}) {
-            int b = tri[(c + other) % 3], d = tri[(c + 3 - other) % 3];
-            Vec3 eb = layout.positions[b] - pa, ed = layout.positions[d] - pa;
+            int cb = (c + other) % 3, cd = (c + 3 - other) % 3;
+            Vec3 eb = layout.positions[tri[cb]] - pa, ed = layout.positions[tri[cd]] - pa;
             double angle = std::atan2(eb.cross(ed).norm(), eb.dot(ed));
             double w = std::tan(angle / 2) / std::max(eb.norm(), 1e-300);
             diagonal[it->second] += w;
-            auto jt = interior.find(b);
+            int wb = wedge(t, cb);
+            auto jt = interior.find(wb);
             if (jt != interior.end()) entries.emplace_back(it->second, jt->second, -w);
-            else rhs.row(it->second) += w * uvOf.at(b).transpose();
+            else rhs.row(it->second) += w * uvOf.at(wb).transpose();
           }
         }
       }
@@ -139,7 +183,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       solver.compute(A);
       if (solver.info() != Eigen::Success) throw std::runtime_error("patch " + std::to_string(p) + ": its mapping failed");
       Eigen::MatrixXd uv = solver.solve(rhs);
-      for (int i = 0; i < ni; ++i) uvOf[interiorVertex[i]] = Vec2(uv(i, 0), uv(i, 1));
+      for (int i = 0; i < ni; ++i) uvOf[interiorWedge[i]] = Vec2(uv(i, 0), uv(i, 1));
     }
     // Interior grid points: locate in the mapped triangles.
     for (int j = 1; j < H; ++j)
@@ -147,9 +191,8 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         Vec2 x(i, j);
         int best = -1;
         double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
-        for (int t : trianglesOf[p]) {
-          const auto& tri = layout.triangles[t];
-          const Vec2 &A = uvOf[tri[0]], &B = uvOf[tri[1]], &C = uvOf[tri[2]];
+        for (int t : tris) {
+          const Vec2 &A = uvOf[wedge(t, 0)], &B = uvOf[wedge(t, 1)], &C = uvOf[wedge(t, 2)];
           double area = cross2(B - A, C - A);
           if (std::abs(area) < 1e-300) continue;
           double l0 = cross2(B - x, C - x) / area, l1 = cross2(C - x, A - x) / area, l2 = 1 - l0 - l1;

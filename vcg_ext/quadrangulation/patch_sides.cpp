@@ -22,6 +22,7 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
     PatchSides& ps = g.patches[p];
     int side = -1;
     std::vector<int> chain;
+    int chainStart = 0;
     auto closeSegment = [&]() {
       if (chain.size() < 2) return;
       // The same key from both sides: the smaller of the chain's two end edges.
@@ -38,14 +39,14 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
         int id = int(g.segments.size());
         g.segments.push_back(std::move(s));
         segmentOfEdge[key] = id;
-        ps.sides[side].push_back({id, false});
+        ps.sides[side].push_back({id, false, chainStart});
       } else {
         LayoutSegment& s = g.segments[it->second];
         std::vector<int> reversed(chain.rbegin(), chain.rend());
         if (s.vertices != reversed || s.patchB >= 0)
           throw std::runtime_error("patch " + std::to_string(p) + ": its sides do not match its neighbour's");
         s.patchB = p;
-        ps.sides[side].push_back({it->second, true});
+        ps.sides[side].push_back({it->second, true, chainStart});
       }
       chain.clear();
     };
@@ -65,6 +66,7 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
           ps.corners[side] = v;
         }
         chain.assign(1, v);
+        chainStart = k;
       }
     }
     if (side != 3) throw std::runtime_error("patch " + std::to_string(p) + " does not have 4 corners");

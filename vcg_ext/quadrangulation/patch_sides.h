@@ -26,6 +26,7 @@ struct LayoutSegment {
 struct SideSegment {
   int segment;
   bool reversed;
+  int loopStart;  ///< position in the patch's boundary loop where the side enters the segment
 };
 
 struct PatchSides {
