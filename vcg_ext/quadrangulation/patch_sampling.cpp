@@ -1,11 +1,11 @@
 #include "quadrangulation/patch_sampling.h"
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
+#include "quadrangulation/patch_map.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <map>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -28,48 +28,90 @@ std::vector<Vec3> samplesAlong(const std::vector<Vec3>& poly, int n) {
   return out;
 }
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+/// Image of the point at side coordinate c on side k of a W × H rectangle.
+Vec2 sideUv(int k, double c, double W, double H) {
+  switch (k) {
+    case 0: return Vec2(c, 0);
+    case 1: return Vec2(W, c);
+    case 2: return Vec2(W - c, H);
+    default: return Vec2(0, H - c);
+  }
+}
 
 }  // namespace
+
+std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p) {
+  const PatchReport& rep = layout.patches[p];
+  const int m = int(rep.loop.size());
+  int first = 0;
+  while (first < m && !rep.loopCorner[first]) ++first;
+  std::vector<Vec2> uv(m);
+  // Sides by loop positions, each normalised by its arc length.
+  int side = -1;
+  std::vector<int> positions;
+  auto flush = [&](int k, int closing) {
+    if (positions.empty()) return;
+    std::vector<double> acc(1, 0);
+    for (std::size_t i = 1; i < positions.size(); ++i)
+      acc.push_back(acc.back() + (layout.positions[rep.loop[positions[i]]] - layout.positions[rep.loop[positions[i - 1]]]).norm());
+    double total = acc.back() + (layout.positions[rep.loop[closing]] - layout.positions[rep.loop[positions.back()]]).norm();
+    for (std::size_t i = 0; i < positions.size(); ++i) uv[positions[i]] = sideUv(k, total > 0 ? acc[i] / total : 0, 1, 1);
+    positions.clear();
+  };
+  for (int step = 0; step < m; ++step) {
+    int k = (first + step) % m;
+    if (rep.loopCorner[k]) {
+      flush(side, k);
+      ++side;
+    }
+    positions.push_back(k);
+  }
+  flush(side, first);
+  return uv;
+}
 
 QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths) {
   if (!lengths.inconsistentPatches.empty())
     throw std::runtime_error(std::to_string(lengths.inconsistentPatches.size()) +
                              " patches have opposite sides of different lengths (zero chains)");
   QuadMesh q;
-  // Nodes (segment ends) and segment samples get their quad-mesh vertices once.
   std::unordered_map<int, int> nodeVertex;
-  auto node = [&](int layoutVertex) {
-    auto it = nodeVertex.find(layoutVertex);
+  auto node = [&](int id) {
+    auto it = nodeVertex.find(id);
     if (it != nodeVertex.end()) return it->second;
-    q.positions.push_back(layout.positions[layoutVertex]);
-    return nodeVertex[layoutVertex] = q.numVertices() - 1;
+    q.positions.push_back(graph.nodePosition(layout, id));
+    return nodeVertex[id] = q.numVertices() - 1;
   };
+  // Samples of the segments used by the patches, made once and shared by both sides.
   std::vector<std::vector<int>> segmentSamples(graph.segments.size());
-  for (int s = 0; s < int(graph.segments.size()); ++s) {
-    std::vector<Vec3> poly;
-    for (int v : graph.segments[s].vertices) poly.push_back(layout.positions[v]);
-    for (const Vec3& p : samplesAlong(poly, lengths.segments[s])) {
-      q.positions.push_back(p);
-      segmentSamples[s].push_back(q.numVertices() - 1);
-    }
+  std::vector<char> sampled(graph.segments.size(), 0);
+  for (const auto& ps : graph.patches) {
+    if (!ps.active) continue;
+    for (const auto& side : ps.sides)
+      for (const auto& ss : side) {
+        if (sampled[ss.segment]) continue;
+        sampled[ss.segment] = 1;
+        for (const Vec3& p : samplesAlong(graph.segments[ss.segment].polyline, lengths.segments[ss.segment])) {
+          q.positions.push_back(p);
+          segmentSamples[ss.segment].push_back(q.numVertices() - 1);
+        }
+      }
   }
-  // Half-edges of the layout mesh, to join the triangles of a patch across inner edges.
-  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
   std::unordered_map<std::uint64_t, int> halfEdge;
   for (int t = 0; t < int(layout.triangles.size()); ++t)
-    for (int i = 0; i < 3; ++i) halfEdge[key(layout.triangles[t][i], layout.triangles[t][(i + 1) % 3])] = t * 3 + i;
-  // Triangles of each patch.
+    for (int i = 0; i < 3; ++i)
+      halfEdge[PatchMap::edgeKey(layout.triangles[t][i], layout.triangles[t][(i + 1) % 3])] = t * 3 + i;
   std::vector<std::vector<int>> trianglesOf(layout.numPatches());
   for (int t = 0; t < int(layout.triangles.size()); ++t) trianglesOf[layout.patch[t]].push_back(t);
+  std::map<int, std::unique_ptr<PatchMap>> unitMaps;  // layout patch -> map onto [0,1]²
 
-  for (int p = 0; p < layout.numPatches(); ++p) {
+  for (int p = 0; p < int(graph.patches.size()); ++p) {
     const PatchSides& ps = graph.patches[p];
+    if (!ps.active) continue;
     const int W = lengths.sideLength(graph, p, 0), H = lengths.sideLength(graph, p, 1);
-    // Grid vertex ids: (W+1) × (H+1); the boundary ones from nodes and segment samples.
     std::vector<int> grid((W + 1) * (H + 1), -1);
     auto at = [&](int i, int j) -> int& { return grid[j * (W + 1) + i]; };
-    auto sidePoint = [&](int k, int c) -> int& {  // c along side k from its first corner
+    auto sidePoint = [&](int k, int c) -> int& {
       switch (k) {
         case 0: return at(c, 0);
         case 1: return at(W, c);
@@ -77,139 +119,55 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         default: return at(0, H - c);
       }
     };
-    // Wedges: the copies of a vertex inside the patch, separated by its boundary (a vertex
-    // the boundary loop meets twice, as on a cut through a cylinder, has two).
-    const auto& tris = trianglesOf[p];
-    std::unordered_map<int, int> slotOf;  // t*3+c -> local slot
-    std::vector<int> parent;
-    for (int t : tris)
-      for (int c = 0; c < 3; ++c) {
-        slotOf[t * 3 + c] = int(parent.size());
-        parent.push_back(int(parent.size()));
-      }
-    auto find = [&](int x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
-    auto cornerIn = [&](int t, int v) {
-      for (int c = 0; c < 3; ++c)
-        if (layout.triangles[t][c] == v) return c;
-      return -1;
-    };
-    for (int t : tris)
-      for (int i = 0; i < 3; ++i) {
-        if (layout.edgeCurve[t][i] != -1) continue;
-        int a = layout.triangles[t][i], b = layout.triangles[t][(i + 1) % 3];
-        auto it = halfEdge.find(key(b, a));
-        if (it == halfEdge.end()) continue;
-        int t2 = it->second / 3;
-        parent[find(slotOf[t * 3 + i])] = find(slotOf[t2 * 3 + cornerIn(t2, a)]);
-        parent[find(slotOf[t * 3 + (i + 1) % 3])] = find(slotOf[t2 * 3 + cornerIn(t2, b)]);
-      }
-    auto wedge = [&](int t, int c) { return find(slotOf[t * 3 + c]); };
-    const PatchReport& rep = layout.patches[p];
-    const int loopSize = int(rep.loop.size());
-    auto loopWedge = [&](int k) {
-      k %= loopSize;
-      return wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k]));
-    };
-    // UV of the boundary wedges.
-    std::unordered_map<int, Vec2> uvOf;
-    auto sideUv = [&](int k, double c) {
-      switch (k) {
-        case 0: return Vec2(c, 0);
-        case 1: return Vec2(W, c);
-        case 2: return Vec2(W - c, H);
-        default: return Vec2(0, H - c);
-      }
-    };
+    std::vector<Vec2> loopUv;
+    if (ps.original) loopUv.assign(layout.patches[ps.layoutPatch].loop.size(), Vec2::Zero());
     for (int k = 0; k < 4; ++k) {
       int offset = 0;
       for (const SideSegment& ss : ps.sides[k]) {
         const LayoutSegment& seg = graph.segments[ss.segment];
         const int n = lengths.segments[ss.segment];
-        std::vector<int> chain = seg.vertices;
-        if (ss.reversed) std::reverse(chain.begin(), chain.end());
-        sidePoint(k, offset) = node(chain.front());
-        for (int m = 1; m < n; ++m)
-          sidePoint(k, offset + m) = segmentSamples[ss.segment][ss.reversed ? n - 1 - m : m - 1];
-        double total = seg.length, run = 0;
-        for (std::size_t i = 0; i < chain.size(); ++i) {
-          if (i > 0) run += (layout.positions[chain[i]] - layout.positions[chain[i - 1]]).norm();
-          uvOf[loopWedge(ss.loopStart + int(i))] = sideUv(k, offset + (total > 0 ? n * run / total : 0));
+        sidePoint(k, offset) = node(ss.reversed ? seg.nodeB : seg.nodeA);
+        for (int m = 1; m < n; ++m) sidePoint(k, offset + m) = segmentSamples[ss.segment][ss.reversed ? n - 1 - m : m - 1];
+        if (ps.original) {  // the segment's layout vertices go where its samples are
+          std::vector<int> chain = seg.vertices;
+          if (ss.reversed) std::reverse(chain.begin(), chain.end());
+          const int loopSize = int(loopUv.size());
+          double run = 0;
+          for (std::size_t i = 0; i < chain.size(); ++i) {
+            if (i > 0) run += (layout.positions[chain[i]] - layout.positions[chain[i - 1]]).norm();
+            loopUv[(ss.loopStart + int(i)) % loopSize] = sideUv(k, offset + (seg.length > 0 ? n * run / seg.length : 0), W, H);
+          }
         }
         offset += n;
       }
     }
-    // Mean-value mapping of the interior wedges.
-    std::unordered_map<int, int> interior;
-    std::vector<int> interiorWedge;
-    for (int t : tris)
-      for (int c = 0; c < 3; ++c) {
-        int w = wedge(t, c);
-        if (!uvOf.count(w) && !interior.count(w)) {
-          interior[w] = int(interiorWedge.size());
-          interiorWedge.push_back(w);
+    if (ps.original) {
+      // The patch mapped onto its integer rectangle: grid lines meet the sides at their samples.
+      PatchMap map(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge, [&](int k) { return loopUv[k]; });
+      for (int j = 1; j < H; ++j)
+        for (int i = 1; i < W; ++i) {
+          q.positions.push_back(map.pointAt(Vec2(i, j)));
+          at(i, j) = q.numVertices() - 1;
         }
+    } else {
+      // A part of a split patch: its rectangle inside the layout patch's unit-square map.
+      auto& map = unitMaps[ps.layoutPatch];
+      if (!map) {
+        std::vector<Vec2> unit = unitSquareBoundary(layout, ps.layoutPatch);
+        map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
+                                         [&](int k) { return unit[k]; });
       }
-    const int ni = int(interiorWedge.size());
-    if (ni > 0) {
-      std::vector<Eigen::Triplet<double>> entries;
-      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
-      std::vector<double> diagonal(ni, 0);
-      for (int t : tris) {
-        const auto& tri = layout.triangles[t];
-        for (int c = 0; c < 3; ++c) {
-          auto it = interior.find(wedge(t, c));
-          if (it == interior.end()) continue;
-          const Vec3& pa = layout.positions[tri[c]];
-          for (int other : {1, 2}) {
-            int cb = (c + other) % 3, cd = (c + 3 - other) % 3;
-            Vec3 eb = layout.positions[tri[cb]] - pa, ed = layout.positions[tri[cd]] - pa;
-            double angle = std::atan2(eb.cross(ed).norm(), eb.dot(ed));
-            double w = std::tan(angle / 2) / std::max(eb.norm(), 1e-300);
-            diagonal[it->second] += w;
-            int wb = wedge(t, cb);
-            auto jt = interior.find(wb);
-            if (jt != interior.end()) entries.emplace_back(it->second, jt->second, -w);
-            else rhs.row(it->second) += w * uvOf.at(wb).transpose();
-          }
+      for (int j = 1; j < H; ++j)
+        for (int i = 1; i < W; ++i) {
+          Vec2 uv(ps.u0 + (ps.u1 - ps.u0) * i / W, ps.v0 + (ps.v1 - ps.v0) * j / H);
+          q.positions.push_back(map->pointAt(uv));
+          at(i, j) = q.numVertices() - 1;
         }
-      }
-      for (int i = 0; i < ni; ++i) entries.emplace_back(i, i, diagonal[i]);
-      Eigen::SparseMatrix<double> A(ni, ni);
-      A.setFromTriplets(entries.begin(), entries.end());
-      Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-      solver.compute(A);
-      if (solver.info() != Eigen::Success) throw std::runtime_error("patch " + std::to_string(p) + ": its mapping failed");
-      Eigen::MatrixXd uv = solver.solve(rhs);
-      for (int i = 0; i < ni; ++i) uvOf[interiorWedge[i]] = Vec2(uv(i, 0), uv(i, 1));
     }
-    // Interior grid points: locate in the mapped triangles.
-    for (int j = 1; j < H; ++j)
-      for (int i = 1; i < W; ++i) {
-        Vec2 x(i, j);
-        int best = -1;
-        double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
-        for (int t : tris) {
-          const Vec2 &A = uvOf[wedge(t, 0)], &B = uvOf[wedge(t, 1)], &C = uvOf[wedge(t, 2)];
-          double area = cross2(B - A, C - A);
-          if (std::abs(area) < 1e-300) continue;
-          double l0 = cross2(B - x, C - x) / area, l1 = cross2(C - x, A - x) / area, l2 = 1 - l0 - l1;
-          double mn = std::min({l0, l1, l2});
-          if (mn > bestMin) bestMin = mn, best = t, b0 = l0, b1 = l1, b2 = l2;
-          if (mn >= 0) break;
-        }
-        if (best < 0 || bestMin < -1e-6)
-          throw std::runtime_error("patch " + std::to_string(p) + ": a grid point falls outside its mapping");
-        const auto& tri = layout.triangles[best];
-        q.positions.push_back(b0 * layout.positions[tri[0]] + b1 * layout.positions[tri[1]] + b2 * layout.positions[tri[2]]);
-        at(i, j) = q.numVertices() - 1;
-      }
     for (int j = 0; j < H; ++j)
       for (int i = 0; i < W; ++i) {
         q.quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-        q.quadPatch.push_back(p);
+        q.quadPatch.push_back(ps.layoutPatch);
       }
   }
   return q;

@@ -16,6 +16,10 @@ namespace fcql {
 
 /// Throws std::runtime_error if a patch's opposite sides differ (a zero chain left) or its
 /// mapping fails.
+/// The boundary loop of layout patch p mapped onto the unit square: side k (from corner k)
+/// onto the k-th side of the square, by arc length.
+std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p);
+
 QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths);
 
 }  // namespace fcql

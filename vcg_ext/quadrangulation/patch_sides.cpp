@@ -9,6 +9,7 @@ namespace fcql {
 PatchGraph buildPatchGraph(const PatchLayout& layout) {
   PatchGraph g;
   g.patches.resize(layout.numPatches());
+  g.numLayoutVertices = int(layout.positions.size());
   std::map<std::pair<int, int>, int> segmentOfEdge;  // undirected first edge of a segment -> id
   for (int p = 0; p < layout.numPatches(); ++p) {
     const PatchReport& rep = layout.patches[p];
@@ -20,6 +21,7 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
       if (rep.loopCorner[k]) first = k;
     if (first < 0) throw std::runtime_error("patch " + std::to_string(p) + " has no corner on its boundary");
     PatchSides& ps = g.patches[p];
+    ps.layoutPatch = p;
     int side = -1;
     std::vector<int> chain;
     int chainStart = 0;
@@ -33,8 +35,11 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
       if (it == segmentOfEdge.end()) {
         LayoutSegment s;
         s.vertices = chain;
+        for (int v : chain) s.polyline.push_back(layout.positions[v]);
         for (std::size_t i = 1; i < chain.size(); ++i)
           s.length += (layout.positions[chain[i]] - layout.positions[chain[i - 1]]).norm();
+        s.nodeA = chain.front();
+        s.nodeB = chain.back();
         s.patchA = p;
         int id = int(g.segments.size());
         g.segments.push_back(std::move(s));

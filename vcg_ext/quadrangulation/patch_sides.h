@@ -17,8 +17,11 @@
 namespace fcql {
 
 struct LayoutSegment {
-  std::vector<int> vertices;  ///< layout vertex ids, node to node, as first met (patchA on the left)
-  double length = 0;          ///< Euclidean length of the chain
+  std::vector<int> vertices;  ///< layout vertex ids, node to node, as first met (patchA on the left);
+                              ///< empty for segments made by zero-chain splits
+  std::vector<Vec3> polyline; ///< the segment's points, node to node
+  int nodeA = -1, nodeB = -1; ///< node ids of its ends (see PatchGraph)
+  double length = 0;          ///< length of the polyline
   int patchA = -1, patchB = -1;
 };
 
@@ -31,12 +34,26 @@ struct SideSegment {
 
 struct PatchSides {
   std::array<std::vector<SideSegment>, 4> sides;  ///< counter-clockwise, side k from corner k to k+1
-  std::array<int, 4> corners{};                   ///< layout vertex ids of the corners
+  std::array<int, 4> corners{};                   ///< node ids of the corners
+  int layoutPatch = -1;       ///< the layout patch this (part of a) patch lies in
+  /// The part of the layout patch's unit-square map this patch covers (all of it unless it
+  /// comes from zero-chain splits).
+  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;
+  bool active = true;         ///< false once split in four
+  bool original = true;       ///< sides are the layout patch's own boundary, segment for segment
 };
 
+/// Node ids: layout vertex ids, then numLayoutVertices + i for extraNodes[i] (side midpoints
+/// and centres made by zero-chain splits).
 struct PatchGraph {
   std::vector<LayoutSegment> segments;
-  std::vector<PatchSides> patches;  ///< one per layout patch
+  std::vector<PatchSides> patches;  ///< the layout patches first (same index), then split parts
+  int numLayoutVertices = 0;
+  std::vector<Vec3> extraNodes;
+
+  Vec3 nodePosition(const PatchLayout& layout, int node) const {
+    return node < numLayoutVertices ? layout.positions[node] : extraNodes[node - numLayoutVertices];
+  }
 };
 
 /// Throws std::runtime_error naming the first patch that is not a disk with 4 corners.

@@ -26,7 +26,7 @@ SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, d
   }
   const double softWeight = 10.0 * (1 + ns);  // any mismatch costs more than all rounding
   for (const PatchSides& ps : graph.patches)
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 2 && ps.active; ++k) {
       const auto& a = ps.sides[k];
       const auto& b = ps.sides[k + 2];
       std::vector<std::pair<int, double>> diff;
@@ -54,7 +54,8 @@ SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, d
   out.segments.resize(ns);
   for (int s = 0; s < ns; ++s) out.segments[s] = int(std::lround(r.values[n[s]]));
   for (int p = 0; p < int(graph.patches.size()); ++p)
-    if (out.sideLength(graph, p, 0) != out.sideLength(graph, p, 2) || out.sideLength(graph, p, 1) != out.sideLength(graph, p, 3))
+    if (graph.patches[p].active &&
+        (out.sideLength(graph, p, 0) != out.sideLength(graph, p, 2) || out.sideLength(graph, p, 1) != out.sideLength(graph, p, 3)))
       out.inconsistentPatches.push_back(p);
   return out;
 }

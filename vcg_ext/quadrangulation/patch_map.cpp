@@ -1,0 +1,113 @@
+#include "quadrangulation/patch_map.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace fcql {
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace
+
+int PatchMap::wedge(int t, int c) const {
+  int x = slotOf_.at(t * 3 + c);
+  while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+  return x;
+}
+
+PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+                   const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv)
+    : layout_(layout), patch_(patch), triangles_(triangles) {
+  for (int t : triangles_)
+    for (int c = 0; c < 3; ++c) {
+      slotOf_[t * 3 + c] = int(parent_.size());
+      parent_.push_back(int(parent_.size()));
+    }
+  auto cornerIn = [&](int t, int v) {
+    for (int c = 0; c < 3; ++c)
+      if (layout.triangles[t][c] == v) return c;
+    return -1;
+  };
+  auto unite = [&](int a, int b) { parent_[wedge(a / 3, a % 3)] = wedge(b / 3, b % 3); };
+  for (int t : triangles_)
+    for (int i = 0; i < 3; ++i) {
+      if (layout.edgeCurve[t][i] != -1) continue;
+      int a = layout.triangles[t][i], b = layout.triangles[t][(i + 1) % 3];
+      auto it = halfEdges.find(edgeKey(b, a));
+      if (it == halfEdges.end()) continue;
+      int t2 = it->second / 3;
+      unite(t * 3 + i, t2 * 3 + cornerIn(t2, a));
+      unite(t * 3 + (i + 1) % 3, t2 * 3 + cornerIn(t2, b));
+    }
+  const PatchReport& rep = layout.patches[patch];
+  for (int k = 0; k < int(rep.loop.size()); ++k)
+    uv_[wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k]))] = boundaryUv(k);
+  // Interior wedges: mean-value weights, w_ab = (tan(α/2) + tan(β/2)) / |ab| summed per triangle.
+  std::unordered_map<int, int> interior;
+  std::vector<int> interiorWedge;
+  for (int t : triangles_)
+    for (int c = 0; c < 3; ++c) {
+      int w = wedge(t, c);
+      if (!uv_.count(w) && !interior.count(w)) {
+        interior[w] = int(interiorWedge.size());
+        interiorWedge.push_back(w);
+      }
+    }
+  const int ni = int(interiorWedge.size());
+  if (ni == 0) return;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
+  std::vector<double> diagonal(ni, 0);
+  for (int t : triangles_) {
+    const auto& tri = layout.triangles[t];
+    for (int c = 0; c < 3; ++c) {
+      auto it = interior.find(wedge(t, c));
+      if (it == interior.end()) continue;
+      const Vec3& pa = layout.positions[tri[c]];
+      for (int other : {1, 2}) {
+        int cb = (c + other) % 3, cd = (c + 3 - other) % 3;
+        Vec3 eb = layout.positions[tri[cb]] - pa, ed = layout.positions[tri[cd]] - pa;
+        double angle = std::atan2(eb.cross(ed).norm(), eb.dot(ed));
+        double w = std::tan(angle / 2) / std::max(eb.norm(), 1e-300);
+        diagonal[it->second] += w;
+        int wb = wedge(t, cb);
+        auto jt = interior.find(wb);
+        if (jt != interior.end()) entries.emplace_back(it->second, jt->second, -w);
+        else rhs.row(it->second) += w * uv_.at(wb).transpose();
+      }
+    }
+  }
+  for (int i = 0; i < ni; ++i) entries.emplace_back(i, i, diagonal[i]);
+  Eigen::SparseMatrix<double> A(ni, ni);
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+  solver.compute(A);
+  if (solver.info() != Eigen::Success) throw std::runtime_error("patch " + std::to_string(patch) + ": its mapping failed");
+  Eigen::MatrixXd uv = solver.solve(rhs);
+  for (int i = 0; i < ni; ++i) uv_[interiorWedge[i]] = Vec2(uv(i, 0), uv(i, 1));
+}
+
+Vec3 PatchMap::pointAt(const Vec2& x) const {
+  int best = -1;
+  double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
+  for (int t : triangles_) {
+    const Vec2 &A = uv_.at(wedge(t, 0)), &B = uv_.at(wedge(t, 1)), &C = uv_.at(wedge(t, 2));
+    double area = cross2(B - A, C - A);
+    if (std::abs(area) < 1e-300) continue;
+    double l0 = cross2(B - x, C - x) / area, l1 = cross2(C - x, A - x) / area, l2 = 1 - l0 - l1;
+    double mn = std::min({l0, l1, l2});
+    if (mn > bestMin) bestMin = mn, best = t, b0 = l0, b1 = l1, b2 = l2;
+    if (mn >= 0) break;
+  }
+  if (best < 0 || bestMin < -1e-6)
+    throw std::runtime_error("patch " + std::to_string(patch_) + ": a grid point falls outside its mapping");
+  const auto& tri = layout_.triangles[best];
+  return b0 * layout_.positions[tri[0]] + b1 * layout_.positions[tri[1]] + b2 * layout_.positions[tri[2]];
+}
+
+}  // namespace fcql

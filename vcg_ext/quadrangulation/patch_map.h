@@ -1,0 +1,38 @@
+// PatchMap: a layout patch (a disk cut out of the layout's refined triangle mesh) mapped onto
+// a rectangle with mean-value coordinates (Floater), given where its boundary goes. Copies of
+// a vertex that the boundary meets twice (a cut through a cylinder) are kept apart.
+#pragma once
+
+#include "layout/patch_layout.h"
+
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace fcql {
+
+class PatchMap {
+public:
+  /// `boundaryUv(k)` gives the image of the boundary loop position k of the patch.
+  /// `halfEdges` maps (a,b) of the layout triangles to t*3+i. Throws std::runtime_error if the
+  /// linear system cannot be solved.
+  PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+           const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv);
+
+  /// The surface point whose image is `uv`; throws std::runtime_error if it is outside.
+  Vec3 pointAt(const Vec2& uv) const;
+
+  static std::uint64_t edgeKey(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+
+private:
+  int wedge(int t, int c) const;
+  const PatchLayout& layout_;
+  int patch_;
+  std::vector<int> triangles_;
+  std::unordered_map<int, int> slotOf_;
+  mutable std::vector<int> parent_;
+  std::unordered_map<int, Vec2> uv_;
+};
+
+}  // namespace fcql
