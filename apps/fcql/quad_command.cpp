@@ -4,7 +4,7 @@
 
 #include "field/field_io.h"
 #include "layout/layout_io.h"
-#include "quadrangulation/patch_sampling.h"
+#include "quadrangulation/quadrangulation.h"
 
 #include <chrono>
 #include <cmath>
@@ -25,10 +25,15 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
     target = cl.number("scale", 0.02, 1e-5, 1.0) * diagonal;
   }
   progress(quiet, "quadrangulating: integer side lengths (target quad edge " + std::to_string(target) + ")");
-  qs.graph = buildPatchGraph(ls.patches);
-  qs.lengths = solveSideLengths(qs.graph, target, cl.number("ilp-time-limit", 60, 1, 86400));
-  qs.mesh = samplePatches(ls.patches, qs.graph, qs.lengths);
-  qs.report = checkQuadMesh(qs.mesh);
+  QuadrangulationResult r = quadrangulate(ls.patches, target, cl.number("ilp-time-limit", 60, 1, 86400));
+  qs.graph = std::move(r.graph);
+  qs.lengths = std::move(r.lengths);
+  qs.mesh = std::move(r.mesh);
+  qs.report = r.report;
+  if (r.splitPatches > 0)
+    progress(quiet, "zero chains: " + std::to_string(r.splitPatches) + " patches split in four (" +
+                        std::to_string(r.splitRounds) + " rounds)");
+  stats.set("quad.zero_chain_splits", r.splitPatches);
   qs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress(quiet, "quad mesh: " + std::to_string(qs.mesh.numQuads()) + " quads, " + std::to_string(qs.mesh.numVertices()) +
                       " vertices, genus " + std::to_string(qs.report.genus) + ", " + std::to_string(qs.report.borderLoops) +

@@ -41,6 +41,7 @@ struct PatchSides {
   double u0 = 0, u1 = 1, v0 = 0, v1 = 1;
   bool active = true;         ///< false once split in four
   bool original = true;       ///< sides are the layout patch's own boundary, segment for segment
+  bool forceEqual = false;    ///< opposite sides equal as a hard constraint even with t-junctions
 };
 
 /// Node ids: layout vertex ids, then numLayoutVertices + i for extraNodes[i] (side midpoints

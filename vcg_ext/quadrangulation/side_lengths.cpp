@@ -11,8 +11,9 @@ int SideLengths::sideLength(const PatchGraph& g, int p, int k) const {
   return n;
 }
 
-SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds) {
-  if (!(targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
+namespace {
+
+SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds, bool honourForced) {
   IntegerProgram ip;
   const int ns = int(graph.segments.size());
   std::vector<int> n(ns), t(ns);
@@ -32,8 +33,9 @@ SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, d
       std::vector<std::pair<int, double>> diff;
       for (const auto& s : a) diff.push_back({n[s.segment], 1.0});
       for (const auto& s : b) diff.push_back({n[s.segment], -1.0});
-      if (a.size() == 1 && b.size() == 1) {
-        if (a[0].segment != b[0].segment) ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
+      if ((a.size() == 1 && b.size() == 1) || (honourForced && ps.forceEqual)) {
+        if (!(a.size() == 1 && b.size() == 1 && a[0].segment == b[0].segment))
+          ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
         continue;
       }
       // d ≥ |Σa − Σb|
@@ -46,7 +48,10 @@ SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, d
       ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, 0);
     }
   IntegerProgram::Result r = ip.solve(timeLimitSeconds);
-  if (!r.hasSolution()) throw std::runtime_error("side lengths: " + r.message);
+  if (!r.hasSolution()) {
+    if (honourForced && r.status == IntegerProgram::Status::Infeasible) return solve(graph, targetEdgeLength, timeLimitSeconds, false);
+    throw std::runtime_error("side lengths: " + r.message);
+  }
   SideLengths out;
   out.status = r.status;
   out.message = r.message;
@@ -58,6 +63,13 @@ SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, d
         (out.sideLength(graph, p, 0) != out.sideLength(graph, p, 2) || out.sideLength(graph, p, 1) != out.sideLength(graph, p, 3)))
       out.inconsistentPatches.push_back(p);
   return out;
+}
+
+}  // namespace
+
+SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds) {
+  if (!(targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
+  return solve(graph, targetEdgeLength, timeLimitSeconds, true);
 }
 
 }  // namespace fcql

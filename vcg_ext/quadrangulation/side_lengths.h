@@ -23,7 +23,8 @@ struct SideLengths {
   int sideLength(const PatchGraph& g, int p, int k) const;
 };
 
-/// Throws std::runtime_error if lp_solve finds no solution.
+/// Throws std::runtime_error if lp_solve finds no solution. Patches with forceEqual get hard
+/// equalities; if that makes the program infeasible it is solved again without them.
 SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds);
 
 }  // namespace fcql

@@ -1,0 +1,24 @@
+// The quadrangulation stage (§4.4–4.5): patch sides, integer side lengths, zero-chain splits
+// until every patch has equal opposite sides, then patch sampling.
+#pragma once
+
+#include "quadrangulation/patch_sampling.h"
+#include "quadrangulation/zero_chains.h"
+
+namespace fcql {
+
+struct QuadrangulationResult {
+  PatchGraph graph;
+  SideLengths lengths;
+  QuadMesh mesh;
+  QuadMeshReport report;
+  int splitRounds = 0;     ///< rounds of zero-chain splits
+  int splitPatches = 0;    ///< patches split in four, in all
+};
+
+/// Throws std::runtime_error (with the reason) if a patch is not a 4-cornered disk or zero
+/// chains remain after `maxSplitRounds` rounds.
+QuadrangulationResult quadrangulate(const PatchLayout& layout, double targetEdgeLength, double ilpTimeLimit,
+                                    int maxSplitRounds = 8);
+
+}  // namespace fcql
