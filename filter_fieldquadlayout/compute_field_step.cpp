@@ -1,40 +1,19 @@
 #include "compute_field_step.h"
 
-#include <chrono>
 #include <cstdio>
 #include <utility>
 
 namespace fcql_meshlab {
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-void progress(vcg::CallBackPos* cb, int percent, const char* what) {
-  if (cb) cb(percent, what);
-}
-
-std::string formatSeconds(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f s", s);
-  return buffer;
-}
-
-}  // namespace
-
 FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params,
-                                 vcg::CallBackPos* cb) {
+                                 const Progress& progress) {
   FieldStepResult r;
-  progress(cb, 0, "Field-Coherent Quad Layout: converting the mesh\n");
+  progress(0, "converting the mesh");
   auto t0 = Clock::now();
   r.converted = toSurfaceMesh(cm);
   r.conversionSeconds = secondsSince(t0);
 
-  progress(cb, 10, "Field-Coherent Quad Layout: cross field\n");
+  progress(10, "cross field");
   auto t1 = Clock::now();
   if (params.useExisting && hasFaceField(cm)) {
     r.field = readFaceField(cm, r.converted);
@@ -47,11 +26,11 @@ FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params
   }
   r.fieldSeconds = secondsSince(t1);
 
-  progress(cb, 80, "Field-Coherent Quad Layout: singularities and ports\n");
+  progress(80, "singularities and ports");
   auto t2 = Clock::now();
   r.analysis = fcql::analyzeField(r.converted.mesh, r.field);
   r.analysisSeconds = secondsSince(t2);
-  progress(cb, 100, "Field-Coherent Quad Layout: done\n");
+  progress(100, "cross field done");
   return r;
 }
 

@@ -18,6 +18,7 @@
 #include "field/field_generation.h"
 #include "filter_parameters.h"
 #include "meshlab_mesh_adapter.h"
+#include "step_common.h"
 
 #include <string>
 #include <vector>
@@ -37,7 +38,7 @@ struct FieldStepResult {
 };
 
 FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params,
-                                 vcg::CallBackPos* cb);
+                                 const Progress& progress);
 
 void storeFieldStep(MeshModel& mm, const FieldStepResult& result);
 

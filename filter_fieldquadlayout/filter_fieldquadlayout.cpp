@@ -135,7 +135,7 @@ bool FilterFieldQuadLayoutPlugin::applyComputeCrossField(MeshModel& mm,
                                                          const RichParameterList& parameters,
                                                          vcg::CallBackPos* cb) {
   const FieldParameters params = readFieldParameters(parameters);  // throws ParameterError
-  const FieldStepResult result = computeFieldStep(mm.cm, params, cb);
+  const FieldStepResult result = computeFieldStep(mm.cm, params, Progress{cb});
   storeFieldStep(mm, result);
   for (const std::string& line : describeFieldStep(result, params)) Log(line);
   return true;

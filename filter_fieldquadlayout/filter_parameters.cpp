@@ -18,6 +18,10 @@ constexpr const char* TracingParameters::kPhi;
 constexpr double TracingParameters::kDefaultAlpha;
 constexpr int TracingParameters::kDefaultK;
 constexpr double TracingParameters::kDefaultPhi;
+constexpr const char* LayoutParameters::kIlpTimeLimit;
+constexpr double LayoutParameters::kDefaultIlpTimeLimit;
+constexpr double LayoutParameters::kMinIlpTimeLimit;
+constexpr double LayoutParameters::kMaxIlpTimeLimit;
 
 namespace {
 
@@ -40,6 +44,15 @@ double readFloatInRange(const RichParameterList& list, const char* key, double l
     throw ParameterError(std::string("parameter '") + key + "' (" + what + ") is " +
                          formatNumber(value) + ", must be between " + formatNumber(lo) +
                          " and " + formatNumber(hi));
+  return value;
+}
+
+double readFloatAtLeast(const RichParameterList& list, const char* key, double lo, const char* what) {
+  requirePresent(list, key);
+  const double value = list.getFloat(QString(key));
+  if (!std::isfinite(value) || value < lo)
+    throw ParameterError(std::string("parameter '") + key + "' (" + what + ") is " +
+                         formatNumber(value) + ", must be a number >= " + formatNumber(lo));
   return value;
 }
 
@@ -73,7 +86,7 @@ FieldParameters readFieldParameters(const RichParameterList& list) {
 void addTracingParameters(RichParameterList& list) {
   list.addParam(RichFloat(
       QString(TracingParameters::kAlpha), float(TracingParameters::kDefaultAlpha),
-      "Alpha: drift penalty",
+      "Drift penalty \u03b1",
       "Weight of the drift of a separatrix from the cross field in the tracing metric "
       "(Eq. 1 of the paper). 0 gives geodesics; larger values follow the field more closely. "
       "Must be >= 0."));
@@ -89,7 +102,7 @@ void addTracingParameters(RichParameterList& list) {
 
 TracingParameters readTracingParameters(const RichParameterList& list) {
   TracingParameters p;
-  p.alpha = readFloatInRange(list, TracingParameters::kAlpha, 0.0, 1e9, "drift penalty");
+  p.alpha = readFloatAtLeast(list, TracingParameters::kAlpha, 0.0, "drift penalty");
   requirePresent(list, TracingParameters::kK);
   p.k = list.getInt(QString(TracingParameters::kK));
   if (p.k < 1)
@@ -97,6 +110,23 @@ TracingParameters readTracingParameters(const RichParameterList& list) {
                          "' (sinks per source) is " + std::to_string(p.k) + ", must be >= 1");
   p.phiDeg = readFloatInRange(list, TracingParameters::kPhi, 1.0, 45.0,
                               "auxiliary point angle in degrees");
+  return p;
+}
+
+void addLayoutParameters(RichParameterList& list) {
+  list.addParam(RichFloat(
+      QString(LayoutParameters::kIlpTimeLimit), float(LayoutParameters::kDefaultIlpTimeLimit),
+      "ILP time limit (seconds)",
+      "Time limit of each 0-1 program that selects the separatrices (lp_solve). When it is "
+      "reached the best selection found so far is used and the log says so. Valid range "
+      "1..86400 seconds."));
+}
+
+LayoutParameters readLayoutParameters(const RichParameterList& list) {
+  LayoutParameters p;
+  p.ilpTimeLimit = readFloatInRange(list, LayoutParameters::kIlpTimeLimit,
+                                    LayoutParameters::kMinIlpTimeLimit,
+                                    LayoutParameters::kMaxIlpTimeLimit, "ILP time limit in seconds");
   return p;
 }
 

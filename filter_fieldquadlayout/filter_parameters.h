@@ -34,7 +34,7 @@ struct FieldParameters {
 void addFieldParameters(RichParameterList& list);
 FieldParameters readFieldParameters(const RichParameterList& list);
 
-// ---- Trace Separatrices (filter 2; declared here so the later filters share one definition) --
+// ---- Trace Separatrices (filter 2; filters 3 and 5 re-trace with the same group) ----------
 struct TracingParameters {
   static constexpr const char* kAlpha = "alpha";
   static constexpr const char* kK = "k";
@@ -50,5 +50,18 @@ struct TracingParameters {
 
 void addTracingParameters(RichParameterList& list);
 TracingParameters readTracingParameters(const RichParameterList& list);
+
+// ---- Solve Layout (filter 3; filter 5 adds it after the field and tracing groups) ------------
+struct LayoutParameters {
+  static constexpr const char* kIlpTimeLimit = "ilp_time_limit";
+  static constexpr double kDefaultIlpTimeLimit = 60.0;
+  static constexpr double kMinIlpTimeLimit = 1.0;
+  static constexpr double kMaxIlpTimeLimit = 86400.0;
+
+  double ilpTimeLimit = kDefaultIlpTimeLimit;  ///< seconds per 0-1 program
+};
+
+void addLayoutParameters(RichParameterList& list);
+LayoutParameters readLayoutParameters(const RichParameterList& list);
 
 }  // namespace fcql_meshlab
