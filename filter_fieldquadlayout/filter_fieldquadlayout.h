@@ -4,19 +4,23 @@
 // fcql_core (vcg_ext/).
 //
 // Filters (DESIGN.md §4; class Remeshing):
-//   1. Field-Coherent Quad Layout: Compute Cross Field        (implemented)
-//   2. Field-Coherent Quad Layout: Trace Separatrices         (planned)
-//   3. Field-Coherent Quad Layout: Solve Layout               (planned)
-//   4. Field-Coherent Quad Layout: Quadrangulate              (planned)
-//   5. Field-Coherent Quad Layout: All Steps                  (planned)
-// A planned filter is registered by adding its id to kImplementedFilters in the .cpp and a case
-// in each switch; the ids, names and infos are already defined.
+//   1. Field-Coherent Quad Layout: Compute Cross Field    (compute_field_step.h)
+//   2. Field-Coherent Quad Layout: Trace Separatrices     (trace_step.h)
+//   3. Field-Coherent Quad Layout: Solve Layout           (layout_step.h)
+//   4. Field-Coherent Quad Layout: Quadrangulate          (quad_step.h)
+//   5. Field-Coherent Quad Layout: All Steps              (the four steps above in one go)
+// Filters 2-4 start from the cross field that filter 1 leaves on the mesh (per-face PD1) and
+// re-trace from it (deterministic), so each needs only filter 1 to have run. Every filter
+// computes everything first and writes the document last: a failure leaves it unchanged.
 #pragma once
 
 #include <common/interfaces.h>
 
 #include <QObject>
 #include <QString>
+
+#include <string>
+#include <vector>
 
 class FilterFieldQuadLayoutPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
@@ -52,6 +56,15 @@ public:
 private:
   bool applyComputeCrossField(MeshModel& mm, const RichParameterList& parameters,
                               vcg::CallBackPos* cb);
+  bool applyTraceSeparatrices(MeshDocument& md, MeshModel& mm,
+                              const RichParameterList& parameters, vcg::CallBackPos* cb);
+  bool applySolveLayout(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
+                        vcg::CallBackPos* cb);
+  bool applyQuadrangulate(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
+                          vcg::CallBackPos* cb);
+  bool applyAllSteps(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
+                     vcg::CallBackPos* cb);
+  void logLines(const std::vector<std::string>& lines);
   /// Logs the reason (meshlabserver does not print errorMessage), sets errorMessage, returns false.
   bool fail(FilterIDType filter, const QString& reason);
 };

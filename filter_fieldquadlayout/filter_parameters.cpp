@@ -22,6 +22,10 @@ constexpr const char* LayoutParameters::kIlpTimeLimit;
 constexpr double LayoutParameters::kDefaultIlpTimeLimit;
 constexpr double LayoutParameters::kMinIlpTimeLimit;
 constexpr double LayoutParameters::kMaxIlpTimeLimit;
+constexpr const char* QuadParameters::kScale;
+constexpr double QuadParameters::kDefaultScale;
+constexpr double QuadParameters::kMinScale;
+constexpr double QuadParameters::kMaxScale;
 
 namespace {
 
@@ -127,6 +131,23 @@ LayoutParameters readLayoutParameters(const RichParameterList& list) {
   p.ilpTimeLimit = readFloatInRange(list, LayoutParameters::kIlpTimeLimit,
                                     LayoutParameters::kMinIlpTimeLimit,
                                     LayoutParameters::kMaxIlpTimeLimit, "ILP time limit in seconds");
+  return p;
+}
+
+void addQuadParameters(RichParameterList& list) {
+  list.addParam(RichFloat(
+      QString(QuadParameters::kScale), float(QuadParameters::kDefaultScale),
+      "Quad size (fraction of the diagonal)",
+      "Target edge length of the quads, as a fraction of the diagonal of the bounding box "
+      "(0.02 = 2% of the diagonal, like fcql run --scale). Smaller values give more quads. "
+      "Valid range 0.00001..1."));
+}
+
+QuadParameters readQuadParameters(const RichParameterList& list) {
+  QuadParameters p;
+  p.scale = readFloatInRange(list, QuadParameters::kScale, QuadParameters::kMinScale,
+                             QuadParameters::kMaxScale,
+                             "target quad edge length as a fraction of the bounding-box diagonal");
   return p;
 }
 

@@ -64,4 +64,18 @@ struct LayoutParameters {
 void addLayoutParameters(RichParameterList& list);
 LayoutParameters readLayoutParameters(const RichParameterList& list);
 
+// ---- Quadrangulate (filter 4; filter 5 adds it last) ----------------------------------------
+struct QuadParameters {
+  static constexpr const char* kScale = "scale";
+  static constexpr double kDefaultScale = 0.02;
+  static constexpr double kMinScale = 1e-5;
+  static constexpr double kMaxScale = 1.0;
+
+  /// Target quad edge length as a fraction of the bounding-box diagonal (as `fcql run --scale`).
+  double scale = kDefaultScale;
+};
+
+void addQuadParameters(RichParameterList& list);
+QuadParameters readQuadParameters(const RichParameterList& list);
+
 }  // namespace fcql_meshlab

@@ -1,0 +1,103 @@
+#include "quad_step.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace fcql_meshlab {
+
+double scaledJacobian(const fcql::Vec3& a, const fcql::Vec3& b, const fcql::Vec3& c,
+                      const fcql::Vec3& d) {
+  const fcql::Vec3 p[4] = {a, b, c, d};
+  fcql::Vec3 n = fcql::Vec3::Zero();
+  for (int i = 0; i < 4; ++i) n += p[i].cross(p[(i + 1) % 4]);
+  if (!(n.norm() > 0)) return 0;
+  n.normalize();
+  double worst = 1;
+  for (int i = 0; i < 4; ++i) {
+    const fcql::Vec3 e1 = p[(i + 1) % 4] - p[i], e2 = p[(i + 3) % 4] - p[i];
+    const double l = e1.norm() * e2.norm();
+    worst = std::min(worst, l > 0 ? e1.cross(e2).dot(n) / l : 0.0);
+  }
+  return worst;
+}
+
+QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult& layout,
+                               const LayoutParameters& layoutParams,
+                               const QuadParameters& params, const Progress& progress) {
+  const auto start = Clock::now();
+  QuadStepResult r;
+  r.targetEdgeLength = params.scale * mesh.boundingBoxDiagonal();
+  progress(0, "side lengths and patch sampling");
+  r.quad = fcql::quadrangulate(layout.patches, r.targetEdgeLength, layoutParams.ilpTimeLimit);
+
+  progress(90, "quad layer");
+  const fcql::QuadMesh& q = r.quad.mesh;
+  TriangleLayerData& l = r.layer;
+  l.positions = q.positions;
+  l.triangles.reserve(2 * q.quads.size());
+  for (std::size_t i = 0; i < q.quads.size(); ++i) {
+    const auto& quad = q.quads[i];
+    const fcql::Vec3 &a = q.positions[quad[0]], &b = q.positions[quad[1]],
+                     &c = q.positions[quad[2]], &d = q.positions[quad[3]];
+    const float jacobian = float(scaledJacobian(a, b, c, d));
+    r.scaledJacobian.push_back(jacobian);
+    // Split along the shorter diagonal; it is edge 2 of the first triangle, edge 0 of the
+    // second (edge i runs from corner i to corner i+1).
+    const int s = (a - c).norm() <= (b - d).norm() ? 0 : 1;
+    const int v0 = quad[s], v1 = quad[s + 1], v2 = quad[s + 2], v3 = quad[(s + 3) % 4];
+    l.triangles.push_back({v0, v1, v2});
+    l.faux.push_back({0, 0, 1});
+    l.triangles.push_back({v0, v2, v3});
+    l.faux.push_back({1, 0, 0});
+    const int patch = i < q.quadPatch.size() ? q.quadPatch[i] : -1;
+    for (int k = 0; k < 2; ++k) {
+      l.facePatch.push_back(patch);
+      l.faceQuality.push_back(jacobian);
+    }
+  }
+  r.seconds = secondsSince(start);
+  progress(100, "quad mesh done");
+  return r;
+}
+
+void storeQuadStep(MeshDocument& md, const QuadStepResult& r) {
+  addTriangleLayer(md, QString::fromUtf8(kQuadLayer), r.layer);
+}
+
+std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
+  const fcql::QuadMesh& q = r.quad.mesh;
+  const fcql::QuadMeshReport& rep = r.quad.report;
+  char target[48];
+  std::snprintf(target, sizeof target, "%.6g", r.targetEdgeLength);
+  std::vector<std::string> lines;
+  lines.push_back("Quad mesh: " + std::to_string(q.numQuads()) + " quads, " +
+                  std::to_string(q.numVertices()) + " vertices, " +
+                  std::to_string(rep.irregularVertices) + " irregular vertices, genus " +
+                  std::to_string(rep.genus) + ", " + std::to_string(rep.borderLoops) +
+                  " border loops (target edge length " + target + ")");
+  if (!rep.manifold) lines.push_back("Warning: the quad mesh is not manifold: " + rep.problem);
+  if (r.quad.splitPatches > 0)
+    lines.push_back("Zero chains: " + std::to_string(r.quad.splitPatches) +
+                    " patches split in four (" + std::to_string(r.quad.splitRounds) + " rounds)");
+  if (!r.scaledJacobian.empty()) {
+    double sum = 0, low = 1;
+    int inverted = 0;
+    for (float j : r.scaledJacobian) {
+      sum += j;
+      low = std::min(low, double(j));
+      inverted += j <= 0;
+    }
+    char quality[128];
+    std::snprintf(quality, sizeof quality,
+                  "Scaled Jacobian (face quality): min %.3f, mean %.3f, %d quads <= 0", low,
+                  sum / r.scaledJacobian.size(), inverted);
+    lines.push_back(quality);
+  }
+  lines.push_back("Layer \"" + std::string(kQuadLayer) + "\": " +
+                  std::to_string(r.layer.triangles.size()) +
+                  " triangles, in pairs sharing a faux diagonal");
+  lines.push_back("Time: quadrangulation " + formatSeconds(r.seconds));
+  return lines;
+}
+
+}  // namespace fcql_meshlab

@@ -1,0 +1,53 @@
+// Filter 4, "Quadrangulate": integer side lengths for the patches of the layout, zero-chain
+// splits, and sampling of every patch into a grid of quads (fcql::quadrangulate, as
+// `fcql quad` runs it).
+//
+// What is stored: a new layer "quad mesh". MeshLab has no quads, so each quad is two triangles
+// whose shared diagonal (the shorter one) is flagged faux on both, which is how MeshLab shows
+// and exports polygons. Faces are coloured by the layout patch the quad comes from (with
+// "fcql_patch"/"fcql_patch_f"), and the face quality is the quad's scaled Jacobian: the
+// minimum over its 4 corners of (e1 x e2) . n / (|e1| |e2|), 1 for a square, <= 0 for a
+// folded or concave corner.
+#pragma once
+
+#include <common/meshmodel.h>
+
+#include "document_layers.h"
+#include "filter_parameters.h"
+#include "pipeline_layout.h"
+
+#include "quadrangulation/quadrangulation.h"
+
+#include <string>
+#include <vector>
+
+namespace fcql_meshlab {
+
+constexpr const char* kQuadLayer = "quad mesh";
+
+struct QuadStepResult {
+  fcql::QuadrangulationResult quad;
+  double targetEdgeLength = 0;
+  std::vector<float> scaledJacobian;  ///< per quad
+  TriangleLayerData layer;
+  double seconds = 0;
+};
+
+/// `mesh` is the input surface (for the bounding-box diagonal), `layout` its patch layout.
+/// Throws std::runtime_error if the layout cannot be quadrangulated (e.g. invalid patches).
+QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult& layout,
+                               const LayoutParameters& layoutParams,
+                               const QuadParameters& params, const Progress& progress);
+
+void storeQuadStep(MeshDocument& md, const QuadStepResult& result);
+
+/// Log lines: quads, vertices, irregular vertices, genus, splits, quality, time.
+std::vector<std::string> describeQuadStep(const QuadStepResult& result);
+
+/// Scaled Jacobian of the quad (a, b, c, d), counter-clockwise: the minimum over the corners
+/// of the normalised cross product of the two edges at the corner dotted with the quad normal
+/// (Newell's normal). 0 for a degenerate quad.
+double scaledJacobian(const fcql::Vec3& a, const fcql::Vec3& b, const fcql::Vec3& c,
+                      const fcql::Vec3& d);
+
+}  // namespace fcql_meshlab

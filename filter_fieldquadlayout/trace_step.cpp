@@ -1,0 +1,48 @@
+#include "trace_step.h"
+
+namespace fcql_meshlab {
+
+namespace {
+
+std::vector<const fcql::TracedPath*> candidatePaths(const fcql::SeparatrixGraph& h) {
+  std::vector<const fcql::TracedPath*> paths;
+  paths.reserve(h.arcs.size());
+  for (const fcql::CandidateSeparatrix& arc : h.arcs) paths.push_back(&arc.path);
+  return paths;
+}
+
+}  // namespace
+
+TraceStepResult computeTraceStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
+                                 const fcql::FieldAnalysis& analysis,
+                                 const TracingParameters& params, const Progress& progress) {
+  TraceStepResult r;
+  r.trace = traceSeparatrices(mesh, field, analysis, params, progress.sub(0, 95));
+  progress(95, "candidate separatrices per face");
+  const auto paths = candidatePaths(r.trace.h);
+  r.candidatesPerFace = pathsPerFace(paths, mesh.numFaces());
+  r.polylines = polylineLayer(paths);
+  progress(100, "tracing done");
+  return r;
+}
+
+void storeTraceStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& converted,
+                    const TraceStepResult& r) {
+  setPerFaceValues(mm.cm, converted, kCandidatesAttribute, r.candidatesPerFace, 0);
+  addPolylineLayer(md, QString::fromUtf8(kCandidatesLayer), r.polylines);
+}
+
+std::vector<std::string> describeTraceStep(const TraceStepResult& r) {
+  std::vector<std::string> lines = describeTrace(r.trace);
+  int crossed = 0;
+  for (int c : r.candidatesPerFace) crossed += c > 0;
+  lines.push_back("Candidate separatrices cross " + std::to_string(crossed) + " of " +
+                  std::to_string(r.candidatesPerFace.size()) + " faces (per-face attribute " +
+                  kCandidatesAttribute + "); layer \"" + kCandidatesLayer + "\": " +
+                  std::to_string(r.polylines.edges.size()) + " edges");
+  lines.push_back("Time: graph G " + formatSeconds(r.trace.graphSeconds) + ", tracing " +
+                  formatSeconds(r.trace.tracingSeconds));
+  return lines;
+}
+
+}  // namespace fcql_meshlab

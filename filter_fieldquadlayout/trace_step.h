@@ -1,0 +1,41 @@
+// Filter 2, "Trace Separatrices": graph G and the candidate separatrices (graph H) traced on
+// the cross field left by "Compute Cross Field". As for every filter, computeTraceStep() only
+// reads and may throw; storeTraceStep() writes the document.
+//
+// What is stored:
+//  - per-face int attribute "fcql_candidates" and float copy "fcql_candidates_f": how many
+//    candidate separatrices (arcs of H) cross each face;
+//  - a new edge-mesh layer "candidate separatrices": one polyline per arc of H.
+#pragma once
+
+#include <common/meshmodel.h>
+
+#include "document_layers.h"
+#include "pipeline_trace.h"
+
+#include <string>
+#include <vector>
+
+namespace fcql_meshlab {
+
+constexpr const char* kCandidatesAttribute = "fcql_candidates";
+constexpr const char* kCandidatesLayer = "candidate separatrices";
+
+struct TraceStepResult {
+  TraceResult trace;
+  std::vector<int> candidatesPerFace;  ///< per SurfaceMesh face
+  PolylineLayerData polylines;
+};
+
+/// Traces on `mesh`/`field`/`analysis`, which must outlive the result (graph G refers to them).
+TraceStepResult computeTraceStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
+                                 const fcql::FieldAnalysis& analysis,
+                                 const TracingParameters& params, const Progress& progress);
+
+void storeTraceStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& converted,
+                    const TraceStepResult& result);
+
+/// Log lines: graphs G and H, crossing pairs, times.
+std::vector<std::string> describeTraceStep(const TraceStepResult& result);
+
+}  // namespace fcql_meshlab
