@@ -301,10 +301,14 @@ bool FilterFieldQuadLayoutPlugin::applyAllSteps(MeshDocument& md, MeshModel& mm,
   const QuadParameters qp = readQuadParameters(parameters);
   const Progress progress{cb};
   const FieldStepResult f = computeFieldStep(mm.cm, fp, progress.sub(0, kAllFieldEnd));
+  // The later stages run on the field as the document will hold it (single precision), as
+  // the separate filters would read it back: All Steps gives exactly their results.
   const fcql::SurfaceMesh& mesh = f.converted.mesh;
+  const fcql::CrossField field = fieldAsStored(f.converted, f.field);
+  const fcql::FieldAnalysis analysis = fcql::analyzeField(mesh, field);
   const TraceStepResult t =
-      computeTraceStep(mesh, f.field, f.analysis, tp, progress.sub(kAllFieldEnd, kAllTraceEnd));
-  const LayoutStepResult l = computeLayoutStep(mesh, f.field, f.analysis, t.trace, lp,
+      computeTraceStep(mesh, field, analysis, tp, progress.sub(kAllFieldEnd, kAllTraceEnd));
+  const LayoutStepResult l = computeLayoutStep(mesh, field, analysis, t.trace, lp,
                                                progress.sub(kAllTraceEnd, kAllLayoutEnd));
   const QuadStepResult q =
       computeQuadStep(mesh, l.layout, lp, qp, progress.sub(kAllLayoutEnd, 100));

@@ -5,6 +5,18 @@
 
 namespace fcql_meshlab {
 
+namespace {
+
+// The one conversion between fcql's directions and MeshLab's PD1/PD2, both ways.
+CFaceO::CurVecType toCurvatureDir(const fcql::Vec3& d) {
+  return CFaceO::CurVecType(Scalarm(d.x()), Scalarm(d.y()), Scalarm(d.z()));
+}
+fcql::Vec3 fromCurvatureDir(const CFaceO::CurVecType& d) {
+  return fcql::Vec3(double(d[0]), double(d[1]), double(d[2]));
+}
+
+}  // namespace
+
 ConvertedMesh toSurfaceMesh(const CMeshO& cm) {
   ConvertedMesh out;
   const int nv = int(cm.vert.size());
@@ -57,10 +69,15 @@ fcql::CrossField readFaceField(const CMeshO& cm, const ConvertedMesh& converted)
   if (!hasFaceField(cm)) throw fcql::FieldError("the mesh has no per-face cross field (PD1/PD2)");
   const int nf = converted.mesh.numFaces();
   std::vector<fcql::Vec3> vectors(nf);
-  for (int f = 0; f < nf; ++f) {
-    const auto& d = cm.face[converted.meshLabFace[f]].cPD1();
-    vectors[f] = fcql::Vec3(double(d[0]), double(d[1]), double(d[2]));
-  }
+  for (int f = 0; f < nf; ++f) vectors[f] = fromCurvatureDir(cm.face[converted.meshLabFace[f]].cPD1());
+  return fcql::CrossField::fromVectors(converted.mesh, vectors);
+}
+
+fcql::CrossField fieldAsStored(const ConvertedMesh& converted, const fcql::CrossField& field) {
+  const int nf = converted.mesh.numFaces();
+  std::vector<fcql::Vec3> vectors(nf);
+  for (int f = 0; f < nf; ++f)
+    vectors[f] = fromCurvatureDir(toCurvatureDir(field.direction(converted.mesh, f, 0)));
   return fcql::CrossField::fromVectors(converted.mesh, vectors);
 }
 
@@ -68,10 +85,8 @@ void writeFaceField(CMeshO& cm, const ConvertedMesh& converted, const fcql::Cros
   const int nf = converted.mesh.numFaces();
   for (int f = 0; f < nf; ++f) {
     CFaceO& face = cm.face[converted.meshLabFace[f]];
-    const fcql::Vec3 d0 = field.direction(converted.mesh, f, 0);
-    const fcql::Vec3 d1 = field.direction(converted.mesh, f, 1);
-    face.PD1() = CFaceO::CurVecType(Scalarm(d0.x()), Scalarm(d0.y()), Scalarm(d0.z()));
-    face.PD2() = CFaceO::CurVecType(Scalarm(d1.x()), Scalarm(d1.y()), Scalarm(d1.z()));
+    face.PD1() = toCurvatureDir(field.direction(converted.mesh, f, 0));
+    face.PD2() = toCurvatureDir(field.direction(converted.mesh, f, 1));
   }
 }
 

@@ -39,6 +39,11 @@ bool hasFaceField(const CMeshO& cm);
 /// finite, or orthogonal to its face.
 fcql::CrossField readFaceField(const CMeshO& cm, const ConvertedMesh& converted);
 
+/// The field exactly as readFaceField() reads it back after writeFaceField() (PD1 holds
+/// single-precision numbers). All Steps traces on this, so that its results are those of the
+/// separate filters run one after the other on the stored field.
+fcql::CrossField fieldAsStored(const ConvertedMesh& converted, const fcql::CrossField& field);
+
 /// Writes PD1 = u, PD2 = n × u on the live faces. Requires the per-face curvature directions
 /// to be enabled (MeshModel::updateDataMask(MM_FACECURVDIR)).
 void writeFaceField(CMeshO& cm, const ConvertedMesh& converted, const fcql::CrossField& field);

@@ -5,109 +5,22 @@
 # Usage: meshlab_field.sh FCQL SHARED_DIR BUILD_DIR      (exit 0 pass, 1 fail, 77 skip)
 # Work files go to BUILD_DIR/e2e_meshlab_field (removed on success unless FCQL_KEEP_E2E=1).
 #
-# MeshLab 2020.09 has no option for a plugin folder, so the test builds an overlay prefix in the
-# build dir (MESHLAB.md): a copy of meshlabserver in PREFIX/bin, a symlink to
-# libmeshlab-common.so in PREFIX/lib/x86_64-linux-gnu/meshlab/, and plugins/ with symlinks to
-# Debian's io_base and to the freshly built libfilter_fieldquadlayout.so.
-#
-# Input meshes are written as OFF: Debian's meshlabserver 2020.09 aborts on any OBJ input (an
-# assert in vcglib's ImporterOBJ, exit 134), so the shared eight.obj is converted to OFF first.
+# The overlay prefix, meshlabserver runner and mesh helpers are in lib/meshlab_overlay.bash.
+# Input meshes are written as OFF: Debian's meshlabserver 2020.09 aborts on any OBJ input, so
+# the shared eight.obj is converted to OFF first.
 set -u
 fcql=${1:-}
 shared=${2:-}
 build=${3:-}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-source_dir=$(cd "$here/../.." && pwd)
-script="$source_dir/examples/compute_cross_field.mlx"
-debian_lib=/usr/lib/x86_64-linux-gnu/meshlab
+# shellcheck source=lib/meshlab_overlay.bash
+source "$here/lib/meshlab_overlay.bash"
+debian_lib=$ml_debian_lib
+ml_setup "$build" meshlab_field
+script=$(example_script compute_cross_field) || ml_finish meshlab_field
 
-skip() { echo "SKIP: $*"; exit 77; }
-[ -n "$build" ] && [ -d "$build" ] || skip "no build directory given"
-command -v xvfb-run >/dev/null || skip "xvfb-run is not installed"
-[ -x /usr/bin/meshlabserver ] || skip "Debian's meshlabserver is not installed"
-[ -f "$debian_lib/libmeshlab-common.so" ] || skip "libmeshlab-common.so is not installed"
-[ -f "$debian_lib/plugins/libio_base.so" ] || skip "MeshLab's io_base plugin is not installed"
-[ -f "$script" ] || { echo "FAIL: $script is missing"; exit 1; }
-
-work="$build/e2e_meshlab_field"
-rm -rf "$work"
-mkdir -p "$work"
-plugin=$(find "$build" -path "$work" -prune -o -type f -name libfilter_fieldquadlayout.so -print |
-         head -1)
-[ -n "$plugin" ] || skip "libfilter_fieldquadlayout.so not built in $build (FCQL_BUILD_PLUGIN=OFF?)"
-plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
-
-prefix="$work/prefix"
-plugins="$prefix/lib/x86_64-linux-gnu/meshlab/plugins"
-mkdir -p "$prefix/bin" "$plugins" "$work/xdg"
-chmod 700 "$work/xdg"
-cp /usr/bin/meshlabserver "$prefix/bin/"
-ln -s "$debian_lib/libmeshlab-common.so" "$prefix/lib/x86_64-linux-gnu/meshlab/"
-ln -s "$debian_lib/plugins/libio_base.so" "$plugins/"
-ln -s "$plugin" "$plugins/"
-
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# run_server LOG ARGS...: meshlabserver ARGS under a virtual X server, output into LOG;
-# returns meshlabserver's exit status.
-run_server() {
-  local log=$1
-  shift
-  XDG_CONFIG_HOME="$work/xdg" XDG_RUNTIME_DIR="$work/xdg" \
-    timeout 600 xvfb-run -a "$prefix/bin/meshlabserver" "$@" >"$log" 2>&1
-}
-
-# ply_faces FILE: the face count in a PLY header (ASCII or binary).
-ply_faces() { head -c 4096 "$1" | tr -d '\r' | grep -a '^element face ' | head -1 | awk '{print $3}'; }
-# off_faces FILE: the face count of an OFF file written by the helpers below.
-off_faces() { sed -n 2p "$1" | awk '{print $2}'; }
 # singularity_line LOG: the log line with the singularity counts.
 singularity_line() { grep -a 'Singularities: [0-9]* (by index: ' "$1" | head -1 | sed 's/^LOG: [0-9]* //'; }
-
-# write_cube FILE N: a closed cube of side N, N×N quads per side split in two triangles each,
-# welded vertices, outward orientation (counter-clockwise seen from outside).
-write_cube() {
-  awk -v n="$2" '
-    function id(x, y, z,   k) {
-      k = x "," y "," z
-      if (!(k in ids)) { ids[k] = nv; vx[nv] = x; vy[nv] = y; vz[nv] = z; nv++ }
-      return ids[k]
-    }
-    # side: origin (ox,oy,oz), axes U and V (unit lattice vectors) with U x V = outward normal.
-    function side(ox, oy, oz, ux, uy, uz, wx, wy, wz,   a, b, p00, p10, p11, p01) {
-      for (a = 0; a < n; a++) for (b = 0; b < n; b++) {
-        p00 = id(ox + a*ux + b*wx,         oy + a*uy + b*wy,         oz + a*uz + b*wz)
-        p10 = id(ox + (a+1)*ux + b*wx,     oy + (a+1)*uy + b*wy,     oz + (a+1)*uz + b*wz)
-        p11 = id(ox + (a+1)*ux + (b+1)*wx, oy + (a+1)*uy + (b+1)*wy, oz + (a+1)*uz + (b+1)*wz)
-        p01 = id(ox + a*ux + (b+1)*wx,     oy + a*uy + (b+1)*wy,     oz + a*uz + (b+1)*wz)
-        f[nf++] = p00 " " p10 " " p11
-        f[nf++] = p00 " " p11 " " p01
-      }
-    }
-    BEGIN {
-      nv = 0; nf = 0
-      side(0, 0, 0,  0, 1, 0,  1, 0, 0)   # z = 0, normal -z
-      side(0, 0, n,  1, 0, 0,  0, 1, 0)   # z = n, normal +z
-      side(0, 0, 0,  0, 0, 1,  0, 1, 0)   # x = 0, normal -x
-      side(n, 0, 0,  0, 1, 0,  0, 0, 1)   # x = n, normal +x
-      side(0, 0, 0,  1, 0, 0,  0, 0, 1)   # y = 0, normal -y
-      side(0, n, 0,  0, 0, 1,  1, 0, 0)   # y = n, normal +y
-      print "OFF"; print nv, nf, 0
-      for (i = 0; i < nv; i++) print vx[i], vy[i], vz[i]
-      for (i = 0; i < nf; i++) print 3, f[i]
-    }' >"$1"
-}
-
-# obj_to_off OBJ OFF: triangles of an OBJ (1-based, v/vt/vn allowed) as OFF (0-based).
-obj_to_off() {
-  awk '$1 == "v" { v[nv++] = $2 " " $3 " " $4 }
-       $1 == "f" { for (i = 2; i <= 4; i++) { split($i, p, "/"); c[i] = p[1] - 1 }
-                   f[nf++] = "3 " c[2] " " c[3] " " c[4] }
-       END { print "OFF"; print nv, nf, 0
-             for (i = 0; i < nv; i++) print v[i]
-             for (i = 0; i < nf; i++) print f[i] }' "$1" >"$2"
-}
 
 # nonzero_quality PLY: "x y z quality" of the vertices with a non-zero quality, from the binary
 # PLY that meshlabserver -m vq writes (vertex = float x y z quality, checked); nothing and
@@ -261,7 +174,6 @@ if [ -n "$shared" ] && [ -f "$shared/data/meshes/eight.obj" ]; then
     # Same core, same mesh: the command-line tool (if built) finds the same singularities.
     if [ -x "$fcql" ] && "$fcql" field "$shared/data/meshes/eight.obj" --out "$work/eight_cli" --quiet \
          >/dev/null 2>&1 && [ -f "$work/eight_cli/stats.json" ]; then
-      json_int() { grep -o "\"$2\": *-\?[0-9]*" "$1" | head -1 | grep -o -- '-\?[0-9]*$'; }
       cli_s=$(json_int "$work/eight_cli/stats.json" singularities)
       cli_p=$(json_int "$work/eight_cli/stats.json" ports)
       case "$line" in
@@ -304,10 +216,4 @@ status=$?
 [ $status -ne 0 ] || fail "points: meshlabserver exited with 0 on a mesh without faces"
 [ $status -ne 134 ] && [ $status -ne 139 ] || fail "points: meshlabserver crashed (status $status)"
 
-if [ $failures -ne 0 ]; then
-  echo "$failures failure(s); logs in $work"
-  exit 1
-fi
-echo "PASS: meshlab_field"
-[ -n "${FCQL_KEEP_E2E:-}" ] || rm -rf "$work"
-exit 0
+ml_finish meshlab_field
