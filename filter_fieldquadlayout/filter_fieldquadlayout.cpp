@@ -249,7 +249,7 @@ bool FilterFieldQuadLayoutPlugin::applyTraceSeparatrices(MeshDocument& md, MeshM
   const TraceStepResult t =
       computeTraceStep(s.converted.mesh, s.field, s.analysis, tp, progress.sub(5, 100));
   storeTraceStep(md, mm, s.converted, t);
-  logLines(describeTraceStep(t));
+  logLines(describeTraceStep(t, true));
   return true;
 }
 
@@ -266,8 +266,8 @@ bool FilterFieldQuadLayoutPlugin::applySolveLayout(MeshDocument& md, MeshModel& 
   const LayoutStepResult l =
       computeLayoutStep(mesh, s.field, s.analysis, t.trace, lp, progress.sub(40, 100));
   storeLayoutStep(md, mm, s.converted, l);
-  logLines(describeTraceStep(t));
-  logLines(describeLayoutStep(l));
+  logLines(describeTraceStep(t, false));
+  logLines(describeLayoutStep(l, true));
   return true;
 }
 
@@ -286,8 +286,8 @@ bool FilterFieldQuadLayoutPlugin::applyQuadrangulate(MeshDocument& md, MeshModel
       computeLayoutStep(mesh, s.field, s.analysis, t.trace, lp, progress.sub(35, 70));
   const QuadStepResult q = computeQuadStep(mesh, l.layout, lp, qp, progress.sub(70, 100));
   storeQuadStep(md, q);
-  logLines(describeTraceStep(t));
-  logLines(describeLayoutStep(l));
+  logLines(describeTraceStep(t, false));
+  logLines(describeLayoutStep(l, false));
   logLines(describeQuadStep(q));
   return true;
 }
@@ -317,8 +317,8 @@ bool FilterFieldQuadLayoutPlugin::applyAllSteps(MeshDocument& md, MeshModel& mm,
   storeLayoutStep(md, mm, f.converted, l);
   storeQuadStep(md, q);
   logLines(describeFieldStep(f, fp));
-  logLines(describeTraceStep(t));
-  logLines(describeLayoutStep(l));
+  logLines(describeTraceStep(t, true));
+  logLines(describeLayoutStep(l, true));
   logLines(describeQuadStep(q));
   return true;
 }

@@ -64,8 +64,10 @@ void storeLayoutStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& conve
   addTriangleLayer(md, QString::fromUtf8(kPatchLayoutLayer), r.patchLayer);
 }
 
-std::vector<std::string> describeLayoutStep(const LayoutStepResult& r) {
+std::vector<std::string> describeLayoutStep(const LayoutStepResult& r, bool stored) {
   std::vector<std::string> lines = describeLayout(r.layout);
+  lines.push_back("Time: layout stage " + formatSeconds(r.seconds));
+  if (!stored) return lines;
   std::set<int> onFaces(r.patchOfFace.begin(), r.patchOfFace.end());
   onFaces.erase(-1);
   lines.push_back("Input mesh: " + std::to_string(onFaces.size()) + " of " +
@@ -75,7 +77,6 @@ std::vector<std::string> describeLayoutStep(const LayoutStepResult& r) {
                   std::to_string(r.patchLayer.triangles.size()) +
                   " triangles cut along the separatrices; layer \"" + kSeparatricesLayer +
                   "\": " + std::to_string(r.layout.layout.separatrices.size()) + " polylines");
-  lines.push_back("Time: layout stage " + formatSeconds(r.seconds));
   return lines;
 }
 

@@ -46,8 +46,8 @@ LayoutStepResult computeLayoutStep(const fcql::SurfaceMesh& mesh, const fcql::Cr
 void storeLayoutStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& converted,
                      const LayoutStepResult& result);
 
-/// Log lines: describeLayout() plus what went into the document.
-std::vector<std::string> describeLayoutStep(const LayoutStepResult& result);
+/// Log lines: describeLayout(), the time, and with `stored` what went into the document.
+std::vector<std::string> describeLayoutStep(const LayoutStepResult& result, bool stored);
 
 /// Per face of `numFaces`: the patch of the layout triangles covering most of its area
 /// (-1 for a face without triangles, which does not happen on a valid layout).

@@ -32,16 +32,17 @@ void storeTraceStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& conver
   addPolylineLayer(md, QString::fromUtf8(kCandidatesLayer), r.polylines);
 }
 
-std::vector<std::string> describeTraceStep(const TraceStepResult& r) {
+std::vector<std::string> describeTraceStep(const TraceStepResult& r, bool stored) {
   std::vector<std::string> lines = describeTrace(r.trace);
+  lines.push_back("Time: graph G " + formatSeconds(r.trace.graphSeconds) + ", tracing " +
+                  formatSeconds(r.trace.tracingSeconds));
+  if (!stored) return lines;
   int crossed = 0;
   for (int c : r.candidatesPerFace) crossed += c > 0;
   lines.push_back("Candidate separatrices cross " + std::to_string(crossed) + " of " +
                   std::to_string(r.candidatesPerFace.size()) + " faces (per-face attribute " +
                   kCandidatesAttribute + "); layer \"" + kCandidatesLayer + "\": " +
                   std::to_string(r.polylines.edges.size()) + " edges");
-  lines.push_back("Time: graph G " + formatSeconds(r.trace.graphSeconds) + ", tracing " +
-                  formatSeconds(r.trace.tracingSeconds));
   return lines;
 }
 

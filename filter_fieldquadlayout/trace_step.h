@@ -35,7 +35,8 @@ TraceStepResult computeTraceStep(const fcql::SurfaceMesh& mesh, const fcql::Cros
 void storeTraceStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& converted,
                     const TraceStepResult& result);
 
-/// Log lines: graphs G and H, crossing pairs, times.
-std::vector<std::string> describeTraceStep(const TraceStepResult& result);
+/// Log lines: graphs G and H, crossing pairs, times, and with `stored` what went into the
+/// document (false for the filters that trace again but store something else).
+std::vector<std::string> describeTraceStep(const TraceStepResult& result, bool stored);
 
 }  // namespace fcql_meshlab
