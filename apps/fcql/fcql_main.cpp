@@ -22,7 +22,7 @@ const char* kUsage =
     "  layout MESH|--example NAME [field and trace options] [--ilp-time-limit 60] --out DIR\n"
     "        select separatrices (0-1 program, solving cycle, t-junctions, borders), cut the\n"
     "        surface into patches; adds DIR/separatrices.obj and DIR/layout.ply\n"
-    "  run MESH|--example NAME [all options above] [--scale 0.02 | --target-faces N] --out DIR\n"
+    "  run MESH|--example NAME [all options above] [--scale 0.02 | --target-faces N] [--smooth 5] --out DIR\n"
     "        the whole pipeline down to the quad mesh (side-length ILP, patch sampling);\n"
     "        adds DIR/quad.obj (`quad` is the same command)\n"
     "\n"

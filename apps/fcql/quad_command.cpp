@@ -4,10 +4,12 @@
 
 #include "field/field_io.h"
 #include "layout/layout_io.h"
+#include "metrics/quad_quality.h"
 #include "quadrangulation/quadrangulation.h"
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace fcql {
 
@@ -25,7 +27,12 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
     target = cl.number("scale", 0.02, 1e-5, 1.0) * diagonal;
   }
   progress(quiet, "quadrangulating: integer side lengths (target quad edge " + std::to_string(target) + ")");
-  QuadrangulationResult r = quadrangulate(ls.patches, target, cl.number("ilp-time-limit", 60, 1, 86400));
+  QuadrangulationOptions options;
+  options.targetEdgeLength = target;
+  options.ilpTimeLimit = cl.number("ilp-time-limit", 60, 1, 86400);
+  options.smoothing.iterations = cl.integer("smooth", 5, 0, 1000);
+  options.smoothing.sharpAngleDeg = cl.number("sharp-angle", 35.0, 0.0, 180.0);
+  QuadrangulationResult r = quadrangulate(ls.patches, options);
   qs.graph = std::move(r.graph);
   qs.lengths = std::move(r.lengths);
   qs.mesh = std::move(r.mesh);
@@ -40,6 +47,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
                       " border loops, " + std::to_string(qs.report.irregularVertices) + " irregular vertices" +
                       (qs.report.manifold ? "" : ", NOT MANIFOLD: " + qs.report.problem));
   stats.set("params.target_edge_length", target);
+  stats.set("params.smooth", options.smoothing.iterations);
   stats.set("quad.faces", qs.mesh.numQuads());
   stats.set("quad.vertices", qs.mesh.numVertices());
   stats.set("quad.irregular_vertices", qs.report.irregularVertices);
@@ -47,14 +55,34 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.border_loops", qs.report.borderLoops);
   stats.set("quad.manifold", qs.report.manifold);
   stats.set("quad.segments", int(qs.graph.segments.size()));
+  stats.set("quad.smoothing_fixed_vertices", r.smoothing.fixedVertices);
   stats.set("time_s.quadrangulation", qs.seconds);
+
+  const auto metricsStart = std::chrono::steady_clock::now();
+  const ClosestPointIndex surfaceIndex(fs.mesh);
+  const QuadQuality quality = measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex);
+  stats.set("quad.misaligned_pct", quality.misalignedPercent);
+  stats.set("quad.mean_misalignment_deg", quality.meanMisalignmentDeg);
+  stats.set("quad.min_scaled_jacobian", quality.minScaledJacobian);
+  stats.set("quad.mean_scaled_jacobian", quality.meanScaledJacobian);
+  stats.set("quad.inverted_quads", quality.invertedQuads);
+  stats.set("quad.hausdorff", quality.hausdorff);
+  stats.set("quad.hausdorff_rel", quality.hausdorffRelative);
+  stats.set("time_s.metrics", std::chrono::duration<double>(std::chrono::steady_clock::now() - metricsStart).count());
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "quality: %.2f%% quads misaligned > pi/16 (mean %.2f deg), scaled Jacobian min %.3f mean %.3f, "
+                "Hausdorff %.3g%% of the diagonal",
+                quality.misalignedPercent, quality.meanMisalignmentDeg, quality.minScaledJacobian,
+                quality.meanScaledJacobian, 100 * quality.hausdorffRelative);
+  progress(quiet, line);
   return qs;
 }
 
 int quadCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
                  {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "scale",
-                  "target-faces"},
+                  "target-faces", "smooth"},
                  {"quiet"});
   if (!cl.has("out")) throw UsageError("missing --out DIR");
   if (cl.has("scale") && cl.has("target-faces")) throw UsageError("give --scale or --target-faces, not both");
@@ -63,6 +91,7 @@ int quadCommand(int argc, char** argv) {
   LayoutParameters lp = readLayoutParameters(cl);
   cl.number("scale", 0.02, 1e-5, 1.0);
   cl.integer("target-faces", 1000, 1, 100000000);
+  cl.integer("smooth", 5, 0, 1000);
   StatsJson stats;
   auto start = std::chrono::steady_clock::now();
   FieldStage fs = runFieldStage(cl, stats, quiet);

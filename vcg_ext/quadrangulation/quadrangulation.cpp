@@ -4,24 +4,35 @@
 
 namespace fcql {
 
-QuadrangulationResult quadrangulate(const PatchLayout& layout, double targetEdgeLength, double ilpTimeLimit,
-                                    int maxSplitRounds) {
+QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options) {
+  if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
+  if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
   QuadrangulationResult r;
   r.graph = buildPatchGraph(layout);
-  r.lengths = solveSideLengths(r.graph, targetEdgeLength, ilpTimeLimit);
+  r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, options.ilpTimeLimit);
   while (!r.lengths.inconsistentPatches.empty()) {
-    if (r.splitRounds >= maxSplitRounds)
+    if (r.splitRounds >= options.maxSplitRounds)
       throw std::runtime_error(std::to_string(r.lengths.inconsistentPatches.size()) +
-                               " patches still have unequal opposite sides after " + std::to_string(maxSplitRounds) +
-                               " rounds of zero-chain splits");
+                               " patches still have unequal opposite sides after " +
+                               std::to_string(options.maxSplitRounds) + " rounds of zero-chain splits");
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
-    r.lengths = solveSideLengths(r.graph, targetEdgeLength, ilpTimeLimit);
+    r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, options.ilpTimeLimit);
   }
   r.mesh = samplePatches(layout, r.graph, r.lengths);
+  r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
   r.report = checkQuadMesh(r.mesh);
   return r;
+}
+
+QuadrangulationResult quadrangulate(const PatchLayout& layout, double targetEdgeLength, double ilpTimeLimit,
+                                    int maxSplitRounds) {
+  QuadrangulationOptions options;
+  options.targetEdgeLength = targetEdgeLength;
+  options.ilpTimeLimit = ilpTimeLimit;
+  options.maxSplitRounds = maxSplitRounds;
+  return quadrangulate(layout, options);
 }
 
 }  // namespace fcql

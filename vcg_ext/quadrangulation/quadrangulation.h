@@ -3,6 +3,7 @@
 #pragma once
 
 #include "quadrangulation/patch_sampling.h"
+#include "quadrangulation/quad_smoothing.h"
 #include "quadrangulation/zero_chains.h"
 
 namespace fcql {
@@ -14,10 +15,21 @@ struct QuadrangulationResult {
   QuadMeshReport report;
   int splitRounds = 0;     ///< rounds of zero-chain splits
   int splitPatches = 0;    ///< patches split in four, in all
+  SmoothingReport smoothing;
 };
 
-/// Throws std::runtime_error (with the reason) if a patch is not a 4-cornered disk or zero
-/// chains remain after `maxSplitRounds` rounds.
+struct QuadrangulationOptions {
+  double targetEdgeLength = 0;  ///< wanted quad edge length (> 0), in mesh units
+  double ilpTimeLimit = 60;     ///< seconds per side-length program
+  int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
+  SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions
+};
+
+/// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
+/// patch is not a 4-cornered disk or zero chains remain after `maxSplitRounds` rounds.
+QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
+
+/// The same with default smoothing.
 QuadrangulationResult quadrangulate(const PatchLayout& layout, double targetEdgeLength, double ilpTimeLimit,
                                     int maxSplitRounds = 8);
 

@@ -1,6 +1,10 @@
 #include "quadrangulation/side_lengths.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace fcql {
@@ -13,29 +17,59 @@ int SideLengths::sideLength(const PatchGraph& g, int p, int k) const {
 
 namespace {
 
+int findRoot(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+/// Whether the opposite sides k and k + 2 of ps are one segment each (a hard equality that
+/// the classes below make implicit).
+bool singleSegmentPair(const PatchSides& ps, int k) {
+  return ps.sides[k].size() == 1 && ps.sides[k + 2].size() == 1;
+}
+
 SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds, bool honourForced) {
-  IntegerProgram ip;
   const int ns = int(graph.segments.size());
-  std::vector<int> n(ns), t(ns);
+  // Segments that must be equal because they are the single-segment opposite sides of a
+  // patch form classes (the chords of the layout): one integer variable per class.
+  std::vector<int> parent(ns);
+  for (int s = 0; s < ns; ++s) parent[s] = s;
+  for (const PatchSides& ps : graph.patches)
+    for (int k = 0; k < 2 && ps.active; ++k)
+      if (singleSegmentPair(ps, k))
+        parent[findRoot(parent, ps.sides[k][0].segment)] = findRoot(parent, ps.sides[k + 2][0].segment);
+
+  IntegerProgram ip;
+  std::vector<int> classVariable(ns, -1), n(ns);
+  std::vector<double> ideal(ns), classUpper(ns, 1.0);
   for (int s = 0; s < ns; ++s) {
-    double ideal = graph.segments[s].length / targetEdgeLength;
-    n[s] = ip.addVariable(1, std::max(1.0, 4 * std::ceil(ideal) + 4), true, 0);
-    t[s] = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, 1.0);
-    // t_s ≥ |n_s − ideal|
-    ip.addConstraint({{t[s], 1}, {n[s], -1}}, IntegerProgram::Sense::GreaterEqual, -ideal);
-    ip.addConstraint({{t[s], 1}, {n[s], 1}}, IntegerProgram::Sense::GreaterEqual, ideal);
+    ideal[s] = graph.segments[s].length / targetEdgeLength;
+    const int root = findRoot(parent, s);
+    classUpper[root] = std::max(classUpper[root], 4 * std::ceil(ideal[s]) + 4);
+  }
+  for (int s = 0; s < ns; ++s) {
+    const int root = findRoot(parent, s);
+    if (classVariable[root] < 0) classVariable[root] = ip.addVariable(1, classUpper[root], true, 0);
+    n[s] = classVariable[root];
+    // t_s ≥ |n_s − ideal_s|
+    const int t = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, 1.0);
+    ip.addConstraint({{t, 1}, {n[s], -1}}, IntegerProgram::Sense::GreaterEqual, -ideal[s]);
+    ip.addConstraint({{t, 1}, {n[s], 1}}, IntegerProgram::Sense::GreaterEqual, ideal[s]);
   }
   const double softWeight = 10.0 * (1 + ns);  // any mismatch costs more than all rounding
   for (const PatchSides& ps : graph.patches)
     for (int k = 0; k < 2 && ps.active; ++k) {
-      const auto& a = ps.sides[k];
-      const auto& b = ps.sides[k + 2];
+      if (singleSegmentPair(ps, k)) continue;
+      // Σa − Σb, with the terms of one class gathered.
+      std::map<int, double> sum;
+      for (const auto& s : ps.sides[k]) sum[n[s.segment]] += 1.0;
+      for (const auto& s : ps.sides[k + 2]) sum[n[s.segment]] -= 1.0;
       std::vector<std::pair<int, double>> diff;
-      for (const auto& s : a) diff.push_back({n[s.segment], 1.0});
-      for (const auto& s : b) diff.push_back({n[s.segment], -1.0});
-      if ((a.size() == 1 && b.size() == 1) || (honourForced && ps.forceEqual)) {
-        if (!(a.size() == 1 && b.size() == 1 && a[0].segment == b[0].segment))
-          ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
+      for (const auto& term : sum)
+        if (term.second != 0) diff.push_back(term);
+      if (diff.empty()) continue;
+      if (honourForced && ps.forceEqual) {
+        ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
         continue;
       }
       // d ≥ |Σa − Σb|
@@ -48,6 +82,9 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
       ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, 0);
     }
   IntegerProgram::Result r = ip.solve(timeLimitSeconds);
+  if (std::getenv("FCQL_DEBUG_SIDES"))
+    std::fprintf(stderr, "side lengths: %d segments, %d variables, %d constraints, forced %d, %s, %.2f s, objective %g\n", ns,
+                 ip.numVariables(), ip.numConstraints(), int(honourForced), toString(r.status), r.seconds, r.objective);
   if (!r.hasSolution()) {
     if (honourForced && r.status == IntegerProgram::Status::Infeasible) return solve(graph, targetEdgeLength, timeLimitSeconds, false);
     throw std::runtime_error("side lengths: " + r.message);

@@ -4,6 +4,8 @@
 #include "quadrangulation/patch_sampling.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -131,6 +133,21 @@ private:
     const std::vector<SideSegment> side = g_.patches[p].sides[k];
     double total = 0;
     for (const auto& ss : side) total += g_.segments[ss.segment].length;
+    if (side.size() > 1) {
+      // The side carries t-junctions: split it at the one nearest to its middle, which removes
+      // that t-junction (it becomes a regular crossing with the new inner segment).
+      double run = 0, best = std::numeric_limits<double>::infinity();
+      std::size_t at = 1;
+      for (std::size_t i = 0; i + 1 < side.size(); ++i) {
+        run += g_.segments[side[i].segment].length;
+        if (std::abs(run - 0.5 * total) < best) best = std::abs(run - 0.5 * total), at = i + 1;
+      }
+      const SideSegment& ss = side[at];
+      middle = ss.reversed ? g_.segments[ss.segment].nodeB : g_.segments[ss.segment].nodeA;
+      first.assign(side.begin(), side.begin() + at);
+      second.assign(side.begin() + at, side.end());
+      return;
+    }
     double run = 0;
     for (std::size_t i = 0; i < side.size(); ++i) {
       const SideSegment ss = side[i];

@@ -1,0 +1,101 @@
+#include "metrics/quad_quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fcql {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Angle (0..π/4) between tangent vector d, projected onto face f, and the nearest direction
+/// of the cross of f.
+double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, const Vec3& d) {
+  const Vec3& n = surface.faceNormal(f);
+  const Vec3 t = d - n * n.dot(d);
+  if (!(t.norm() > 0)) return kPi / 4;
+  const Vec3& u = field.u[f];
+  const Vec3 v = n.cross(u);
+  double a = std::atan2(t.dot(v), t.dot(u));     // -π..π
+  a = std::fmod(a + 4 * kPi, kPi / 2);           // 0..π/2
+  return std::min(a, kPi / 2 - a);
+}
+
+}  // namespace
+
+double scaledJacobian(const QuadMesh& mesh, int q) {
+  const auto& f = mesh.quads[q];
+  const auto& P = mesh.positions;
+  Vec3 n = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
+  if (!(n.norm() > 0)) return -1;
+  n.normalize();
+  double worst = 1;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 e1 = P[f[(i + 1) % 4]] - P[f[i]];
+    const Vec3 e2 = P[f[(i + 3) % 4]] - P[f[i]];
+    const double l = e1.norm() * e2.norm();
+    const double j = l > 0 ? e1.cross(e2).dot(n) / l : -1;
+    worst = std::min(worst, j);
+  }
+  return worst;
+}
+
+QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
+                               const ClosestPointIndex& surfaceIndex, double thresholdRad) {
+  QuadQuality r;
+  const int nq = quads.numQuads();
+  if (nq == 0) return r;
+  const auto& P = quads.positions;
+  int misaligned = 0;
+  double sumAngle = 0, sumJ = 0, minJ = std::numeric_limits<double>::infinity(), toSurface = 0;
+  for (int q = 0; q < nq; ++q) {
+    const auto& f = quads.quads[q];
+    const Vec3 centre = (P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4;
+    const ClosestPoint cp = surfaceIndex.closest(centre);
+    toSurface = std::max(toSurface, cp.distance);
+    const Vec3 d1 = (P[f[1]] + P[f[2]]) - (P[f[0]] + P[f[3]]);
+    const Vec3 d2 = (P[f[2]] + P[f[3]]) - (P[f[0]] + P[f[1]]);
+    const double angle = std::max(angleToCross(surface, field, cp.triangle, d1),
+                                  angleToCross(surface, field, cp.triangle, d2));
+    sumAngle += angle;
+    if (angle > thresholdRad) ++misaligned;
+    const double j = scaledJacobian(quads, q);
+    sumJ += j;
+    minJ = std::min(minJ, j);
+    if (j <= 0) ++r.invertedQuads;
+    for (int i = 0; i < 4; ++i)
+      toSurface = std::max({toSurface, surfaceIndex.closest(P[f[i]]).distance,
+                            surfaceIndex.closest((P[f[i]] + P[f[(i + 1) % 4]]) / 2).distance});
+  }
+  r.misalignedPercent = 100.0 * misaligned / nq;
+  r.meanMisalignmentDeg = sumAngle / nq * 180 / kPi;
+  r.minScaledJacobian = minJ;
+  r.meanScaledJacobian = sumJ / nq;
+
+  // Input → quad mesh, each quad split along its shorter diagonal.
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(2 * nq);
+  for (const auto& f : quads.quads) {
+    if ((P[f[2]] - P[f[0]]).squaredNorm() <= (P[f[3]] - P[f[1]]).squaredNorm()) {
+      triangles.push_back({f[0], f[1], f[2]});
+      triangles.push_back({f[0], f[2], f[3]});
+    } else {
+      triangles.push_back({f[0], f[1], f[3]});
+      triangles.push_back({f[1], f[2], f[3]});
+    }
+  }
+  const ClosestPointIndex quadIndex(P, triangles);
+  double toQuads = 0;
+  for (int v = 0; v < surface.numVertices(); ++v)
+    if (!surface.star(v).empty()) toQuads = std::max(toQuads, quadIndex.closest(surface.position(v)).distance);
+  for (int f = 0; f < surface.numFaces(); ++f)
+    toQuads = std::max(toQuads, quadIndex.closest(surface.faceCentroid(f)).distance);
+  r.hausdorff = std::max(toSurface, toQuads);
+  const double diag = surface.boundingBoxDiagonal();
+  r.hausdorffRelative = diag > 0 ? r.hausdorff / diag : 0;
+  return r;
+}
+
+}  // namespace fcql

@@ -1,0 +1,41 @@
+// Quality figures of a quad mesh against the surface and the cross field it was built from
+// (paper, Table 2, and the usual mesh-quality measures).
+//
+// - Misalignment: per quad, its two directions are the vectors joining the midpoints of
+//   opposite edges; each is projected onto the input face nearest to the quad's centre and its
+//   angle to the nearest direction of that face's cross is taken (0..45°). A quad is misaligned
+//   when the larger of its two angles exceeds the threshold (π/16 as in the paper).
+// - Scaled Jacobian of a quad: the minimum over its corners of (e1 × e2)·n / (|e1| |e2|), with
+//   e1, e2 the edges leaving the corner and n the unit normal of the quad (cross product of its
+//   diagonals): 1 for a rectangle, ≤ 0 for a folded or inverted corner.
+// - Hausdorff distance between the quad mesh (each quad as two triangles) and the input
+//   surface, both ways, sampled at vertices, edge midpoints and quad centres on the quad side
+//   and at the vertices and face centroids on the input side.
+#pragma once
+
+#include "field/cross_field.h"
+#include "metrics/closest_point_index.h"
+#include "quadrangulation/quad_mesh.h"
+
+#include <vector>
+
+namespace fcql {
+
+/// Scaled Jacobian of quad q of `mesh` (see above).
+double scaledJacobian(const QuadMesh& mesh, int q);
+
+struct QuadQuality {
+  double misalignedPercent = 0;     ///< % of quads misaligned by more than the threshold
+  double meanMisalignmentDeg = 0;   ///< mean over quads of the larger angle, degrees
+  double minScaledJacobian = 0;
+  double meanScaledJacobian = 0;
+  int invertedQuads = 0;            ///< scaled Jacobian ≤ 0
+  double hausdorff = 0;             ///< symmetric, absolute
+  double hausdorffRelative = 0;     ///< hausdorff / bounding-box diagonal of the input
+};
+
+/// `surfaceIndex` indexes the faces of `surface` (ClosestPointIndex(surface)).
+QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
+                               const ClosestPointIndex& surfaceIndex, double thresholdRad = 3.14159265358979323846 / 16);
+
+}  // namespace fcql

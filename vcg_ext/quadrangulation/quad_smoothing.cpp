@@ -1,0 +1,134 @@
+#include "quadrangulation/quad_smoothing.h"
+
+#include "metrics/closest_point_index.h"
+#include "metrics/quad_quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace fcql {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Per triangle and local edge (i → i+1): 1 if the edge is sharp (dihedral above the threshold).
+std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
+                                            const std::vector<Vec3>& normals, double sharpAngleDeg) {
+  std::vector<std::array<char, 3>> sharp(T.size(), {{0, 0, 0}});
+  std::map<std::pair<int, int>, std::pair<int, int>> open;  // (min, max) → (triangle, edge)
+  const double cosLimit = std::cos(sharpAngleDeg * kPi / 180);
+  for (int t = 0; t < int(T.size()); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = T[t][i], b = T[t][(i + 1) % 3];
+      const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+      auto it = open.find(key);
+      if (it == open.end()) {
+        open.emplace(key, std::make_pair(t, i));
+        continue;
+      }
+      const int s = it->second.first, j = it->second.second;
+      if (normals[t].dot(normals[s]) < cosLimit) sharp[t][i] = sharp[s][j] = 1;
+      open.erase(it);
+    }
+  return sharp;
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? std::min(1.0, std::max(0.0, (p - a).dot(ab) / l2)) : 0.0;
+  return (p - (a + ab * t)).norm();
+}
+
+}  // namespace
+
+SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
+                               const std::vector<std::array<int, 3>>& surfaceTriangles,
+                               const SmoothingOptions& options) {
+  if (options.iterations < 0) throw std::invalid_argument("smoothing: the number of iterations must be >= 0");
+  if (!(options.step > 0 && options.step <= 1)) throw std::invalid_argument("smoothing: the step must be in (0, 1]");
+  SmoothingReport report;
+  if (options.iterations == 0 || quads.numQuads() == 0) return report;
+
+  const ClosestPointIndex index(surfacePositions, surfaceTriangles);
+  std::vector<Vec3> normals(surfaceTriangles.size(), Vec3::Zero());
+  double longestEdge2 = 0;
+  for (size_t t = 0; t < surfaceTriangles.size(); ++t) {
+    const auto& f = surfaceTriangles[t];
+    Vec3 n = (surfacePositions[f[1]] - surfacePositions[f[0]]).cross(surfacePositions[f[2]] - surfacePositions[f[0]]);
+    if (n.norm() > 0) normals[t] = n.normalized();
+    longestEdge2 = std::max(longestEdge2, (surfacePositions[f[1]] - surfacePositions[f[0]]).squaredNorm());
+  }
+  const auto sharp = sharpEdges(surfacePositions, surfaceTriangles, normals, options.sharpAngleDeg);
+
+  // Neighbours along quad edges; border vertices (an edge used by one quad) are fixed.
+  const int nv = quads.numVertices();
+  std::vector<std::vector<int>> neighbours(nv);
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& q : quads.quads)
+    for (int i = 0; i < 4; ++i) {
+      const int a = q[i], b = q[(i + 1) % 4];
+      directed[{a, b}] += 1;
+      neighbours[a].push_back(b);
+      neighbours[b].push_back(a);
+    }
+  std::vector<char> fixed(nv, 0);
+  for (const auto& e : directed)
+    if (!directed.count({e.first.second, e.first.first})) fixed[e.first.first] = fixed[e.first.second] = 1;
+  for (auto& n : neighbours) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  // Feature vertices: on (within a tiny tolerance of) a sharp edge of the nearest triangles.
+  const double tolerance = 1e-7 * std::sqrt(longestEdge2) + 1e-12;
+  for (int v = 0; v < nv; ++v) {
+    if (fixed[v] || neighbours[v].empty()) continue;
+    const ClosestPoint cp = index.closest(quads.positions[v]);
+    const auto& f = surfaceTriangles[cp.triangle];
+    for (int i = 0; i < 3 && !fixed[v]; ++i)
+      if (sharp[cp.triangle][i] &&
+          distanceToSegment(quads.positions[v], surfacePositions[f[i]], surfacePositions[f[(i + 1) % 3]]) <=
+              std::max(tolerance, 1e-6 * (surfacePositions[f[i]] - surfacePositions[f[(i + 1) % 3]]).norm()))
+        fixed[v] = 1;
+  }
+  for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
+
+  std::vector<Vec3> next(quads.positions);
+  for (int it = 0; it < options.iterations; ++it) {
+    const std::vector<Vec3> previous = quads.positions;
+    std::vector<double> before(quads.numQuads());
+    for (int q = 0; q < quads.numQuads(); ++q) before[q] = scaledJacobian(quads, q);
+    for (int v = 0; v < nv; ++v) {
+      next[v] = previous[v];
+      if (fixed[v] || neighbours[v].empty()) continue;
+      Vec3 average = Vec3::Zero();
+      for (int w : neighbours[v]) average += previous[w];
+      average /= double(neighbours[v].size());
+      const ClosestPoint here = index.closest(previous[v]);
+      const Vec3& n = normals[here.triangle];
+      Vec3 move = (average - previous[v]) * options.step;
+      move -= n * n.dot(move);
+      next[v] = index.closest(previous[v] + move).point;
+    }
+    quads.positions = next;
+    // Undo the moves around any quad that this round folded (repeat: an undo can fold another).
+    for (bool again = true; again;) {
+      again = false;
+      for (int q = 0; q < quads.numQuads(); ++q) {
+        if (!(before[q] > 0) || scaledJacobian(quads, q) > 0) continue;
+        for (int v : quads.quads[q])
+          if (quads.positions[v] != previous[v]) {
+            quads.positions[v] = previous[v];
+            ++report.revertedMoves;
+            again = true;
+          }
+      }
+    }
+  }
+  return report;
+}
+
+}  // namespace fcql

@@ -1,0 +1,35 @@
+// Smoothing of the sampled quad mesh with reprojection onto the input surface (§4.5).
+//
+// Each round moves every free vertex a fraction `step` towards the average of its edge
+// neighbours, tangentially (the normal component, taken from the surface triangle nearest to
+// the vertex, is removed), then puts it back on the surface at its closest point. Vertices on
+// the border of the quad mesh and vertices lying on a sharp edge of the surface (dihedral angle
+// above `sharpAngleDeg`) stay where they are, so borders and feature lines are kept. A round is
+// undone for the vertices of any quad it would fold (scaled Jacobian dropping to ≤ 0).
+#pragma once
+
+#include "quadrangulation/quad_mesh.h"
+
+#include <array>
+#include <vector>
+
+namespace fcql {
+
+struct SmoothingOptions {
+  int iterations = 5;
+  double step = 0.5;          ///< 0..1: share of the way to the neighbours' average per round
+  double sharpAngleDeg = 35;  ///< surface edges above this dihedral angle are kept
+};
+
+struct SmoothingReport {
+  int fixedVertices = 0;      ///< border and feature vertices
+  int revertedMoves = 0;      ///< vertex moves undone because they folded a quad
+};
+
+/// `surfacePositions` / `surfaceTriangles`: the surface the quads sample (e.g. the layout's
+/// refined triangles). Throws std::invalid_argument for bad options.
+SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
+                               const std::vector<std::array<int, 3>>& surfaceTriangles,
+                               const SmoothingOptions& options);
+
+}  // namespace fcql
