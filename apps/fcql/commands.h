@@ -72,5 +72,7 @@ int fieldCommand(int argc, char** argv);
 int quadCommand(int argc, char** argv);
 int layoutCommand(int argc, char** argv);
 int traceCommand(int argc, char** argv);
+/// `fcql render DIR --out FILE.png`: pictures of a run's output directory (render_command.cpp).
+int renderCommand(int argc, char** argv);
 
 }  // namespace fcql

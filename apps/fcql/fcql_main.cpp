@@ -25,6 +25,10 @@ const char* kUsage =
     "  run MESH|--example NAME [all options above] [--scale 0.02 | --target-faces N] [--smooth 5] --out DIR\n"
     "        the whole pipeline down to the quad mesh (side-length ILP, patch sampling);\n"
     "        adds DIR/quad.obj (`quad` is the same command)\n"
+    "  render DIR [--view layout|quad|both] [--size 800] [--azimuth 30] [--elevation 20] [--up y] --out FILE.png\n"
+    "        draw a PNG of a run's output directory without a display: patches in colour with\n"
+    "        separatrices and singularities (layout), the quad mesh with its irregular vertices\n"
+    "        (quad), or both side by side\n"
     "\n"
     "MESH is a triangle mesh in OBJ, PLY or OFF. Examples the tool generates itself:\n"
     "  sphere, torus, double_torus, rounded_box, open_cylinder\n";
@@ -42,6 +46,7 @@ int main(int argc, char** argv) {
     if (command == "trace") return fcql::traceCommand(argc, argv);
     if (command == "layout") return fcql::layoutCommand(argc, argv);
     if (command == "quad" || command == "run") return fcql::quadCommand(argc, argv);
+    if (command == "render") return fcql::renderCommand(argc, argv);
     std::cerr << "fcql: error: unknown command '" << command << "' (see fcql --help)\n";
     return 2;
   } catch (const fcql::UsageError& e) {
