@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
-# Benchmark driver: runs `fcql layout` on every shared mesh with the paper's α and k where the
-# paper gives them (bunny 15/30, fertility 30/30, rockerarm 30/30, dragon 15/10), defaults
-# elsewhere, φ = 10°, in the Release build, and writes bench/RESULTS.md.
+# Benchmark driver: runs the whole pipeline (`fcql run`) on every shared mesh with the paper's
+# α and k where the paper gives them (bunny 15/30, fertility 30/30, rockerarm 30/30, dragon
+# 15/10), defaults elsewhere, φ = 10°, in the Release build; renders a layout picture of each
+# mesh into bench/images/NAME.png and writes bench/RESULTS.md. A mesh on which `fcql run` fails
+# is run again with `fcql layout` (its layout figures and picture still count) and the table
+# gives the reason (the last line `fcql run` printed on stderr).
 # Usage: bash bench/run.sh [MESH_NAME ...]   (default: all meshes in ../shared/data/meshes)
+#   With names, the table is printed on stdout and bench/RESULTS.md is left as it is.
+#   FCQL=path/to/fcql picks the tool (default build/bin/fcql, built if missing).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
 shared="$here/../shared/data/meshes"
-fcql="$here/build/bin/fcql"
+fcql="${FCQL:-$here/build/bin/fcql}"
 if [ ! -x "$fcql" ]; then
   bash scripts/build.sh
 fi
@@ -18,9 +23,12 @@ fi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 names=("$@")
+partial=1
 if [ ${#names[@]} -eq 0 ]; then
+  partial=0
   for f in "$shared"/*.obj; do names+=("$(basename "$f" .obj)"); done
 fi
+mkdir -p "$here/bench/images"
 
 # value FILE SECTION KEY: a number from stats.json ("SECTION": { ... "KEY": value ...}).
 value() {
@@ -29,19 +37,27 @@ value() {
     inside && /^  }/ { inside = 0 }
     inside && $1 == key { v = $2; gsub(/[,"]/, "", v); print v; exit }' "$1"
 }
+# fmt FORMAT VALUE: printf of a number, "–" when the value is missing.
+fmt() { if [ -n "$2" ]; then LC_ALL=C printf "$1" "$2"; else printf '–'; fi; }
 
 machine="$(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 {
   echo "# Benchmark results"
   echo
-  echo "Measured $(date -u +%Y-%m-%d) on: $machine. Release build, \`fcql layout\`, φ = 10°,"
-  echo "fields computed by fcql unless the mesh ships one (dragon, eight, lilium: their own field)."
-  echo "Times in seconds (wall clock; tracing runs on all cores). Paper: Table 1 of Pietroni et al. 2016,"
-  echo "on their machine, with their own fields and, for rockerarm, a 70K-face mesh."
+  echo "Measured $(date -u +%Y-%m-%d) on: $machine. Release build, \`fcql run\` (the whole pipeline), φ = 10°,"
+  echo "quad target edge 2% of the diagonal, fields computed by fcql unless the mesh ships one (dragon, eight,"
+  echo "lilium: their own field). Times in seconds (wall clock; tracing runs on all cores). Paper: Table 1 of"
+  echo "Pietroni et al. 2016, on their machine, with their own fields and, for rockerarm, a 70K-face mesh."
   echo
-  echo "| mesh | faces | S | α | k | G nodes | G arcs | H arcs | patches | t-junctions | invalid | field | graph | tracing | ILP | total | peak MiB | paper |G| / patches / t-j / time |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  echo "S: singularities; t-j: t-junctions; invalid: patches that are not 4-sided disks; quads and irr.:"
+  echo "faces and irregular vertices of the quad mesh; mis. %: quads whose edges are more than π/16 off the"
+  echo "field; SJ: scaled Jacobian (min / mean); Hd %: Hausdorff distance to the input, % of the bounding-box"
+  echo "diagonal; ZC: patches split for zero chains; peak: maximum resident memory of the run."
+  echo
+  echo "| mesh | faces | S | α | k | G nodes | G arcs | H arcs | patches | t-j | invalid | quads | irr. | mis. % | SJ min / mean | Hd % | ZC | field | graph | tracing | ILP | quad | total | peak MiB | paper \|G\| / patches / t-j / time |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
 } > "$out/results.md"
+failures=() pictures=()
 
 for name in "${names[@]}"; do
   mesh="$shared/$name.obj"
@@ -53,22 +69,89 @@ for name in "${names[@]}"; do
     rockerarm) alpha=30 k=30 paper="1239K / 75 / 0 / 43.3" ;;
     dragon) alpha=15 k=10 paper="466K / 1024 / 90 / 64.0" ;;
   esac
+  view=()  # camera for the picture, where the default (y up, azimuth 30, elevation 20) shows little
+  case "$name" in
+    aqua_center) view=(--elevation 55) ;;
+    dragon) view=(--up z) ;;
+    fandisk) view=(--azimuth 120 --elevation 30) ;;
+  esac
   field=()
   [ -f "$shared/$name.ffield" ] && field=(--field "$shared/$name.ffield")
+  args=("$mesh" "${field[@]}" --alpha "$alpha" --k "$k" --phi 10 --out "$out/$name" --quiet)
   echo "bench: $name (alpha $alpha, k $k)" >&2
-  if /usr/bin/time -f "%M" -o "$out/$name.mem" "$fcql" layout "$mesh" "${field[@]}" --alpha "$alpha" --k "$k" --phi 10 \
-       --out "$out/$name" --quiet 2>"$out/$name.err"; then
-    s="$out/$name/stats.json"
-    mem=$(( $(tail -1 "$out/$name.mem") / 1024 ))
-    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %s |\n' \
-      "$name" "$(value "$s" mesh faces)" "$(value "$s" field singularities)" "$alpha" "$k" \
-      "$(value "$s" graph_g nodes)" "$(value "$s" graph_g arcs)" "$(value "$s" graph_h arcs)" \
-      "$(value "$s" layout patches)" "$(value "$s" layout t_junctions)" "$(value "$s" layout invalid_patches)" \
-      "$(value "$s" time_s field)" "$(value "$s" time_s graph)" "$(value "$s" time_s tracing)" "$(value "$s" time_s ilp)" \
-      "$(value "$s" time_s total)" "$mem" "$paper" >> "$out/results.md"
+  failed=""
+  if ! /usr/bin/time -f "%M" -o "$out/$name.mem" "$fcql" run "${args[@]}" 2>"$out/$name.err"; then
+    failed=$(grep -v '^Command exited with' "$out/$name.err" | tail -1 | sed 's/^fcql: error: //; s/|/\\|/g')
+    [ -n "$failed" ] || failed="exit status without a message"
+    echo "bench: $name: fcql run failed: $failed; running fcql layout for the layout figures" >&2
+    /usr/bin/time -f "%M" -o "$out/$name.layout.mem" "$fcql" layout "${args[@]}" 2>"$out/$name.layout.err" || true
+  fi
+  s="$out/$name/stats.json"
+  if [ ! -f "$s" ]; then
+    echo "| $name | failed: $failed (and \`fcql layout\`: $(tail -1 "$out/$name.layout.err" | sed 's/^fcql: error: //; s/|/\\|/g')) |" >> "$out/results.md"
+    failures+=("$name")
+    continue
+  fi
+  mem=$(( $(grep -v '^Command' "$out/$name.mem" | tail -1) / 1024 ))
+  if [ -z "$failed" ]; then
+    quads="$(value "$s" quad faces) | $(value "$s" quad irregular_vertices) | $(fmt %.1f "$(value "$s" quad misaligned_pct)")"
+    quads+=" | $(fmt %.2f "$(value "$s" quad min_scaled_jacobian)") / $(fmt %.2f "$(value "$s" quad mean_scaled_jacobian)")"
+    hd=$(value "$s" quad hausdorff_rel)
+    quads+=" | $([ -n "$hd" ] && awk -v h="$hd" 'BEGIN { printf "%.2f", 100 * h }' || printf '–') | $(value "$s" quad zero_chain_splits)"
+    quads+=" | $(fmt %.2f "$(value "$s" time_s field)") | $(fmt %.2f "$(value "$s" time_s graph)") | $(fmt %.2f "$(value "$s" time_s tracing)")"
+    quads+=" | $(fmt %.2f "$(value "$s" time_s ilp)") | $(fmt %.2f "$(value "$s" time_s quadrangulation)") | $(fmt %.2f "$(value "$s" time_s total)")"
   else
-    echo "| $name | failed: $(tail -1 "$out/$name.err") |" >> "$out/results.md"
+    failures+=("$name")
+    quads="quad stage failed: $failed |||||"
+    quads+=" | $(fmt %.2f "$(value "$s" time_s field)") | $(fmt %.2f "$(value "$s" time_s graph)") | $(fmt %.2f "$(value "$s" time_s tracing)")"
+    quads+=" | $(fmt %.2f "$(value "$s" time_s ilp)") | – | $(fmt %.2f "$(value "$s" time_s total)")"
+  fi
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' \
+    "$name" "$(value "$s" mesh faces)" "$(value "$s" field singularities)" "$alpha" "$k" \
+    "$(value "$s" graph_g nodes)" "$(value "$s" graph_g arcs)" "$(value "$s" graph_h arcs)" \
+    "$(value "$s" layout patches)" "$(value "$s" layout t_junctions)" "$(value "$s" layout invalid_patches)" \
+    "$quads" "$mem" "$paper" >> "$out/results.md"
+  if "$fcql" render "$out/$name" --size 480 "${view[@]}" --out "$here/bench/images/$name.png" --quiet 2>"$out/$name.render.err"; then
+    pictures+=("$name")
+  else
+    echo "bench: $name: no picture: $(tail -1 "$out/$name.render.err")" >&2
   fi
 done
-cp "$out/results.md" "$here/bench/RESULTS.md"
-echo "bench: wrote bench/RESULTS.md" >&2
+
+{
+  if [ ${#failures[@]} -gt 0 ]; then
+    echo
+    echo "Failed in \`fcql run\`: ${failures[*]} (reason in the row; the layout figures then come from \`fcql layout\`)."
+  fi
+  if [ ${#pictures[@]} -gt 0 ]; then
+    echo
+    echo "## Layouts"
+    echo
+    echo "\`fcql render DIR --size 480\`: one colour per patch (neighbours differ), separatrices in black,"
+    echo "singularities as dots (blue: 3 separatrices leave, index +1/4; red: 5, index −1/4; white: other)."
+    echo
+    row=() header="" rule=""
+    for name in "${pictures[@]}"; do
+      row+=("![$name](images/$name.png)<br>$name")
+      if [ ${#row[@]} -eq 3 ]; then
+        printf '| %s | %s | %s |\n' "${row[@]}" >> "$out/pictures.md"
+        row=()
+      fi
+    done
+    if [ ${#row[@]} -gt 0 ]; then
+      while [ ${#row[@]} -lt 3 ]; do row+=(" "); done
+      printf '| %s | %s | %s |\n' "${row[@]}" >> "$out/pictures.md"
+    fi
+    echo "| | | |"
+    echo "|---|---|---|"
+    cat "$out/pictures.md"
+  fi
+} >> "$out/results.md"
+
+if [ $partial -eq 1 ]; then
+  cat "$out/results.md"
+  echo "bench: partial run: bench/RESULTS.md left as it is (pictures updated in bench/images/)" >&2
+else
+  cp "$out/results.md" "$here/bench/RESULTS.md"
+  echo "bench: wrote bench/RESULTS.md and bench/images/" >&2
+fi
