@@ -12,7 +12,7 @@
 //  - the vertex selection is replaced by those vertices.
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_api.h"
 
 #include "field/field_analysis.h"
 #include "field/field_generation.h"

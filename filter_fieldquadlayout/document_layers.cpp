@@ -119,7 +119,7 @@ MeshModel* addTriangleLayer(MeshDocument& md, const QString& label, const Triang
       asFloat[t] = float(d.facePatch[t]);
     }
   }
-  mm->UpdateBoxAndNormals();
+  updateBoxAndNormals(*mm);
   return mm;
 }
 

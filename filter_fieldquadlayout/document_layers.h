@@ -6,7 +6,7 @@
 // because MeshLab 2020.09 saves only float attributes correctly (MESHLAB.md).
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_api.h"
 
 #include "meshlab_mesh_adapter.h"
 #include "tracing/traced_path.h"

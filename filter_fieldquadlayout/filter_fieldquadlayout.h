@@ -1,17 +1,17 @@
-// MeshLab 2020.09 filter plugin for "Tracing Field-Coherent Quad Layouts" (Pietroni et al.
-// 2016). Interface glue only: names, descriptions, parameters, dispatch and error reporting.
-// Each filter's work lives in its own *_step.cpp (conversion + fcql calls), the algorithm in
-// fcql_core (vcg_ext/).
+// MeshLab 2020.09 filter plugin (MeshFilterInterface) for "Tracing Field-Coherent Quad Layouts"
+// (Pietroni et al. 2016): libfilter_fieldquadlayout.so for Debian's MeshLab 2020.09.
 //
-// Filters (DESIGN.md §4; class Remeshing):
-//   1. Field-Coherent Quad Layout: Compute Cross Field    (compute_field_step.h)
-//   2. Field-Coherent Quad Layout: Trace Separatrices     (trace_step.h)
-//   3. Field-Coherent Quad Layout: Solve Layout           (layout_step.h)
-//   4. Field-Coherent Quad Layout: Quadrangulate          (quad_step.h)
-//   5. Field-Coherent Quad Layout: All Steps              (the four steps above in one go)
-// Filters 2-4 start from the cross field that filter 1 leaves on the mesh (per-face PD1) and
-// re-trace from it (deterministic), so each needs only filter 1 to have run. Every filter
-// computes everything first and writes the document last: a failure leaves it unchanged.
+// How the code is shared with the FilterPlugin adapter for MeshLab 2022.02+ / pymeshlab
+// (filter_fieldquadlayout_2025.{h,cpp}):
+//  - every filter lives in filter_actions.{h,cpp} (names, python names, descriptions, masks,
+//    parameters, runFilter()), on top of the *_step, pipeline_*, document_layers,
+//    meshlab_mesh_adapter, stored_field and filter_parameters files; all of them are compiled
+//    once per plugin target, against that target's MeshLab headers;
+//  - the few header differences between the two MeshLab versions are in meshlab_api.h (the
+//    only #if FCQL_MESHLAB_API);
+//  - this adapter is interface glue only: QAction ids <-> FilterId, Log() for the log lines,
+//    errorMessage + false on failure (also logged, since meshlabserver does not print
+//    errorMessage).
 #pragma once
 
 #include <common/interfaces.h>
@@ -19,23 +19,12 @@
 #include <QObject>
 #include <QString>
 
-#include <string>
-#include <vector>
-
 class FilterFieldQuadLayoutPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
   MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum FilterId {
-    FP_COMPUTE_CROSS_FIELD = 0,
-    FP_TRACE_SEPARATRICES,
-    FP_SOLVE_LAYOUT,
-    FP_QUADRANGULATE,
-    FP_ALL_STEPS,
-  };
-
   FilterFieldQuadLayoutPlugin();
 
   using MeshFilterInterface::filterInfo;
@@ -52,19 +41,4 @@ public:
   void initParameterSet(QAction* action, MeshModel& m, RichParameterList& parameters) override;
   bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
                    vcg::CallBackPos* cb) override;
-
-private:
-  bool applyComputeCrossField(MeshModel& mm, const RichParameterList& parameters,
-                              vcg::CallBackPos* cb);
-  bool applyTraceSeparatrices(MeshDocument& md, MeshModel& mm,
-                              const RichParameterList& parameters, vcg::CallBackPos* cb);
-  bool applySolveLayout(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
-                        vcg::CallBackPos* cb);
-  bool applyQuadrangulate(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
-                          vcg::CallBackPos* cb);
-  bool applyAllSteps(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
-                     vcg::CallBackPos* cb);
-  void logLines(const std::vector<std::string>& lines);
-  /// Logs the reason (meshlabserver does not print errorMessage), sets errorMessage, returns false.
-  bool fail(FilterIDType filter, const QString& reason);
 };

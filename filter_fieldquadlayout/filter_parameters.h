@@ -9,7 +9,7 @@
 // "All Steps") adds and reads several groups.
 #pragma once
 
-#include <common/filter_parameter/rich_parameter_list.h>
+#include "meshlab_api.h"
 
 #include <stdexcept>
 

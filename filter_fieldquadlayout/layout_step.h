@@ -15,7 +15,7 @@
 //    patch with "fcql_patch"/"fcql_patch_f", vertex quality 1 at patch corners (0 elsewhere).
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_api.h"
 
 #include "document_layers.h"
 #include "pipeline_layout.h"

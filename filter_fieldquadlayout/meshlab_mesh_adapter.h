@@ -8,7 +8,7 @@
 // PD2 = direction 1 = n × u[f].
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_api.h"
 
 #include "field/cross_field.h"
 #include "mesh/surface_mesh.h"

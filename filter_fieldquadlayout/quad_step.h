@@ -10,7 +10,7 @@
 // folded or concave corner.
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_api.h"
 
 #include "document_layers.h"
 #include "filter_parameters.h"

@@ -4,7 +4,7 @@
 // time.
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_api.h"
 
 #include "field/field_analysis.h"
 #include "meshlab_mesh_adapter.h"

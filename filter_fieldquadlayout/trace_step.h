@@ -8,7 +8,7 @@
 //  - a new edge-mesh layer "candidate separatrices": one polyline per arc of H.
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_api.h"
 
 #include "document_layers.h"
 #include "pipeline_trace.h"
