@@ -8,6 +8,7 @@
 # Usage: bash bench/run.sh [MESH_NAME ...]   (default: all meshes in ../shared/data/meshes)
 #   With names, the table is printed on stdout and bench/RESULTS.md is left as it is.
 #   FCQL=path/to/fcql picks the tool (default build/bin/fcql, built if missing).
+#   KEEP=DIR keeps each mesh's output directory in DIR/NAME (default: a temporary folder).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
@@ -20,8 +21,14 @@ if [ ! -d "$shared" ]; then
   echo "bench: $shared is absent: nothing to run" >&2
   exit 0
 fi
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
+if [ -n "${KEEP:-}" ]; then
+  out=$KEEP
+  mkdir -p "$out"
+  rm -f "$out/results.md" "$out/pictures.md"
+else
+  out=$(mktemp -d)
+  trap 'rm -rf "$out"' EXIT
+fi
 names=("$@")
 partial=1
 if [ ${#names[@]} -eq 0 ]; then
@@ -79,6 +86,7 @@ for name in "${names[@]}"; do
   [ -f "$shared/$name.ffield" ] && field=(--field "$shared/$name.ffield")
   args=("$mesh" "${field[@]}" --alpha "$alpha" --k "$k" --phi 10 --out "$out/$name" --quiet)
   echo "bench: $name (alpha $alpha, k $k)" >&2
+  rm -rf "${out:?}/$name"
   failed=""
   if ! /usr/bin/time -f "%M" -o "$out/$name.mem" "$fcql" run "${args[@]}" 2>"$out/$name.err"; then
     failed=$(grep -v '^Command exited with' "$out/$name.err" | tail -1 | sed 's/^fcql: error: //; s/|/\\|/g')
