@@ -7,7 +7,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake pkg-config ca-certificates xz-utils
           meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
-          liblpsolve55-dev libgtest-dev xvfb xauth zlib1g-dev python3 time)
+          liblpsolve55-dev libgtest-dev xvfb xauth xdotool imagemagick zlib1g-dev python3 time)
 
 missing=()
 for p in "${packages[@]}"; do
