@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 
@@ -83,7 +82,6 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
     }
   }
   set_add_rowmode(lp.get(), FALSE);
-  if (const char* path = std::getenv("FCQL_WRITE_LP")) write_lp(lp.get(), const_cast<char*>(path));
   set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
   set_presolve(lp.get(), PRESOLVE_NONE, get_presolveloops(lp.get()));
   set_mip_gap(lp.get(), FALSE, relativeGap_);

@@ -103,7 +103,8 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       halfEdge[PatchMap::edgeKey(layout.triangles[t][i], layout.triangles[t][(i + 1) % 3])] = t * 3 + i;
   std::vector<std::vector<int>> trianglesOf(layout.numPatches());
   for (int t = 0; t < int(layout.triangles.size()); ++t) trianglesOf[layout.patch[t]].push_back(t);
-  std::map<int, std::unique_ptr<PatchMap>> unitMaps;  // layout patch -> map onto [0,1]²
+  std::map<int, std::unique_ptr<PatchMap>> unitMaps;   // layout patch -> map onto [0,1]²
+  std::map<int, std::unique_ptr<PatchMap>> chartMaps;  // polygon chart -> its map
 
   for (int p = 0; p < int(graph.patches.size()); ++p) {
     const PatchSides& ps = graph.patches[p];
@@ -149,8 +150,24 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
           q.positions.push_back(map.pointAt(Vec2(i, j)));
           at(i, j) = q.numVertices() - 1;
         }
+    } else if (ps.chart >= 0) {
+      // A part of a split patch: bilinear in its quad of the layout patch's polygon chart.
+      auto& map = chartMaps[ps.chart];
+      if (!map) {
+        const PolygonChart& chart = graph.charts[ps.chart];
+        map = std::make_unique<PatchMap>(layout, chart.layoutPatch, trianglesOf[chart.layoutPatch], halfEdge,
+                                         [&](int k) { return chart.loopUv[k]; });
+      }
+      const auto& c = ps.chartCorners;
+      for (int j = 1; j < H; ++j)
+        for (int i = 1; i < W; ++i) {
+          const double s = double(i) / W, t = double(j) / H;
+          const Vec2 uv = c[0] * ((1 - s) * (1 - t)) + c[1] * (s * (1 - t)) + c[2] * (s * t) + c[3] * ((1 - s) * t);
+          q.positions.push_back(map->pointAt(uv));
+          at(i, j) = q.numVertices() - 1;
+        }
     } else {
-      // A part of a split patch: its rectangle inside the layout patch's unit-square map.
+      // A whole layout patch whose sides gained nodes from a neighbour's split: its unit-square map.
       auto& map = unitMaps[ps.layoutPatch];
       if (!map) {
         std::vector<Vec2> unit = unitSquareBoundary(layout, ps.layoutPatch);
@@ -159,8 +176,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       }
       for (int j = 1; j < H; ++j)
         for (int i = 1; i < W; ++i) {
-          Vec2 uv(ps.u0 + (ps.u1 - ps.u0) * i / W, ps.v0 + (ps.v1 - ps.v0) * j / H);
-          q.positions.push_back(map->pointAt(uv));
+          q.positions.push_back(map->pointAt(Vec2(double(i) / W, double(j) / H)));
           at(i, j) = q.numVertices() - 1;
         }
     }

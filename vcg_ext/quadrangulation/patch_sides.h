@@ -36,12 +36,21 @@ struct PatchSides {
   std::array<std::vector<SideSegment>, 4> sides;  ///< counter-clockwise, side k from corner k to k+1
   std::array<int, 4> corners{};                   ///< node ids of the corners
   int layoutPatch = -1;       ///< the layout patch this (part of a) patch lies in
-  /// The part of the layout patch's unit-square map this patch covers (all of it unless it
-  /// comes from zero-chain splits).
-  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;
-  bool active = true;         ///< false once split in four
+  /// A part made by a zero-chain split lies in a polygon chart of its layout patch
+  /// (PatchGraph::charts); chartCorners are its corners there, counter-clockwise. −1: the
+  /// patch is a whole layout patch.
+  int chart = -1;
+  std::array<Vec2, 4> chartCorners{};
+  bool active = true;         ///< false once split
   bool original = true;       ///< sides are the layout patch's own boundary, segment for segment
   bool forceEqual = false;    ///< opposite sides equal as a hard constraint even with t-junctions
+};
+
+/// A layout patch mapped onto a convex polygon (a regular n-gon, one edge per segment of its
+/// boundary when it was split): the image of each position of its boundary loop.
+struct PolygonChart {
+  int layoutPatch = -1;
+  std::vector<Vec2> loopUv;
 };
 
 /// Node ids: layout vertex ids, then numLayoutVertices + i for extraNodes[i] (side midpoints
@@ -51,6 +60,7 @@ struct PatchGraph {
   std::vector<PatchSides> patches;  ///< the layout patches first (same index), then split parts
   int numLayoutVertices = 0;
   std::vector<Vec3> extraNodes;
+  std::vector<PolygonChart> charts;
 
   Vec3 nodePosition(const PatchLayout& layout, int node) const {
     return node < numLayoutVertices ? layout.positions[node] : extraNodes[node - numLayoutVertices];

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 namespace fcql {
@@ -13,6 +14,8 @@ namespace fcql {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kSnapShare = 0.35;
+constexpr double kMinScaledJacobian = 0.1;
 
 /// Per triangle and local edge (i → i+1): 1 if the edge is sharp (dihedral above the threshold).
 std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
@@ -96,6 +99,15 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   }
   for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
 
+  // Feature lines: the sharp edges as degenerate triangles (a, b, b), for snapping.
+  std::vector<std::array<int, 3>> featureSegments;
+  for (std::size_t t = 0; t < surfaceTriangles.size(); ++t)
+    for (int i = 0; i < 3; ++i)
+      if (sharp[t][i] && surfaceTriangles[t][i] < surfaceTriangles[t][(i + 1) % 3])
+        featureSegments.push_back({surfaceTriangles[t][i], surfaceTriangles[t][(i + 1) % 3], surfaceTriangles[t][(i + 1) % 3]});
+  std::unique_ptr<ClosestPointIndex> features;
+  if (!featureSegments.empty()) features = std::make_unique<ClosestPointIndex>(surfacePositions, featureSegments);
+
   std::vector<Vec3> next(quads.positions);
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
@@ -112,13 +124,25 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
       Vec3 move = (average - previous[v]) * options.step;
       move -= n * n.dot(move);
       next[v] = index.closest(previous[v] + move).point;
+      if (features) {
+        // A vertex close to a feature line (within kSnapShare of its mean edge length) goes
+        // onto it, so the quads follow creases instead of cutting across them.
+        double edge = 0;
+        for (int w : neighbours[v]) edge += (previous[w] - previous[v]).norm();
+        edge /= double(neighbours[v].size());
+        const ClosestPoint onFeature = features->closest(next[v]);
+        if (onFeature.distance < kSnapShare * edge) {
+          next[v] = onFeature.point;
+          ++report.snappedMoves;
+        }
+      }
     }
     quads.positions = next;
-    // Undo the moves around any quad that this round folded (repeat: an undo can fold another).
+    // Undo the moves around any quad that this round folded or flattened (repeat: an undo can fold another).
     for (bool again = true; again;) {
       again = false;
       for (int q = 0; q < quads.numQuads(); ++q) {
-        if (!(before[q] > 0) || scaledJacobian(quads, q) > 0) continue;
+        if (!(before[q] > kMinScaledJacobian) || scaledJacobian(quads, q) > kMinScaledJacobian) continue;
         for (int v : quads.quads[q])
           if (quads.positions[v] != previous[v]) {
             quads.positions[v] = previous[v];

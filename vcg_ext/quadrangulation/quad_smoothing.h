@@ -2,10 +2,12 @@
 //
 // Each round moves every free vertex a fraction `step` towards the average of its edge
 // neighbours, tangentially (the normal component, taken from the surface triangle nearest to
-// the vertex, is removed), then puts it back on the surface at its closest point. Vertices on
-// the border of the quad mesh and vertices lying on a sharp edge of the surface (dihedral angle
-// above `sharpAngleDeg`) stay where they are, so borders and feature lines are kept. A round is
-// undone for the vertices of any quad it would fold (scaled Jacobian dropping to ≤ 0).
+// the vertex, is removed), then puts it back on the surface at its closest point, or onto the
+// nearest feature line (sharp edges, dihedral angle above `sharpAngleDeg`) when that is closer
+// than about a third of the vertex's mean edge length, so that quads follow creases instead of
+// cutting across them. Vertices on the border of the quad mesh and vertices lying on a sharp
+// edge stay where they are. A round is undone for the vertices of any quad it would fold or
+// nearly flatten (scaled Jacobian dropping below kMinScaledJacobian, unless it was already).
 #pragma once
 
 #include "quadrangulation/quad_mesh.h"
@@ -24,6 +26,7 @@ struct SmoothingOptions {
 struct SmoothingReport {
   int fixedVertices = 0;      ///< border and feature vertices
   int revertedMoves = 0;      ///< vertex moves undone because they folded a quad
+  int snappedMoves = 0;       ///< vertex moves that ended on a feature line
 };
 
 /// `surfacePositions` / `surfaceTriangles`: the surface the quads sample (e.g. the layout's

@@ -1,5 +1,6 @@
 #include "quadrangulation/quadrangulation.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace fcql {
@@ -7,9 +8,11 @@ namespace fcql {
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options) {
   if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
   if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
+  if (!(options.ilpTimeLimit >= 1)) throw std::invalid_argument("the side-length time limit must be at least 1 s");
+  const double timeLimit = std::min(options.ilpTimeLimit, kMaxSideLengthSeconds);
   QuadrangulationResult r;
   r.graph = buildPatchGraph(layout);
-  r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, options.ilpTimeLimit);
+  r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, timeLimit);
   while (!r.lengths.inconsistentPatches.empty()) {
     if (r.splitRounds >= options.maxSplitRounds)
       throw std::runtime_error(std::to_string(r.lengths.inconsistentPatches.size()) +
@@ -18,7 +21,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
-    r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, options.ilpTimeLimit);
+    r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, timeLimit);
   }
   r.mesh = samplePatches(layout, r.graph, r.lengths);
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);

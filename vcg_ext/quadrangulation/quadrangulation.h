@@ -18,9 +18,13 @@ struct QuadrangulationResult {
   SmoothingReport smoothing;
 };
 
+constexpr double kMaxSideLengthSeconds = 10;
+
 struct QuadrangulationOptions {
   double targetEdgeLength = 0;  ///< wanted quad edge length (> 0), in mesh units
-  double ilpTimeLimit = 60;     ///< seconds per side-length program
+  /// Seconds per side-length program, at most kMaxSideLengthSeconds: the first solutions
+  /// lp_solve finds are already consistent, more time only improves the rounding a little.
+  double ilpTimeLimit = 10;
   int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
   SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions
 };

@@ -1,8 +1,6 @@
 #include "quadrangulation/side_lengths.h"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -16,6 +14,9 @@ int SideLengths::sideLength(const PatchGraph& g, int p, int k) const {
 }
 
 namespace {
+
+constexpr double kUnderWeight = 3.0;
+constexpr double kMaxStretch = 1.5;
 
 int findRoot(std::vector<int>& parent, int x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
@@ -41,22 +42,27 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
 
   IntegerProgram ip;
   std::vector<int> classVariable(ns, -1), n(ns);
-  std::vector<double> ideal(ns), classUpper(ns, 1.0);
+  std::vector<double> ideal(ns), classMaxIdeal(ns, 0.0);
   for (int s = 0; s < ns; ++s) {
     ideal[s] = graph.segments[s].length / targetEdgeLength;
     const int root = findRoot(parent, s);
-    classUpper[root] = std::max(classUpper[root], 4 * std::ceil(ideal[s]) + 4);
+    classMaxIdeal[root] = std::max(classMaxIdeal[root], ideal[s]);
   }
   for (int s = 0; s < ns; ++s) {
     const int root = findRoot(parent, s);
-    if (classVariable[root] < 0) classVariable[root] = ip.addVariable(1, classUpper[root], true, 0);
+    // No segment of a class is sampled more than kMaxStretch times coarser than the target.
+    const double lower = std::max(1.0, std::floor(classMaxIdeal[root] / kMaxStretch));
+    if (classVariable[root] < 0)
+      classVariable[root] = ip.addVariable(lower, 4 * std::ceil(classMaxIdeal[root]) + 4, true, 0);
     n[s] = classVariable[root];
-    // t_s ≥ |n_s − ideal_s|
+    // t_s ≥ n_s − ideal_s and t_s ≥ kUnderWeight·(ideal_s − n_s): a chord crossing patches of
+    // different widths gets a count nearer to its wide patches than the plain median, so no
+    // patch is sampled much more coarsely than the target (which would lose the shape).
     const int t = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, 1.0);
     ip.addConstraint({{t, 1}, {n[s], -1}}, IntegerProgram::Sense::GreaterEqual, -ideal[s]);
-    ip.addConstraint({{t, 1}, {n[s], 1}}, IntegerProgram::Sense::GreaterEqual, ideal[s]);
+    ip.addConstraint({{t, 1}, {n[s], kUnderWeight}}, IntegerProgram::Sense::GreaterEqual, kUnderWeight * ideal[s]);
   }
-  const double softWeight = 10.0 * (1 + ns);  // any mismatch costs more than all rounding
+  const double softWeight = 10.0 * kUnderWeight * (1 + ns);  // any mismatch costs more than all rounding
   for (const PatchSides& ps : graph.patches)
     for (int k = 0; k < 2 && ps.active; ++k) {
       if (singleSegmentPair(ps, k)) continue;
@@ -81,10 +87,10 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
       ip.addConstraint(plus, IntegerProgram::Sense::GreaterEqual, 0);
       ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, 0);
     }
+  // A 1% gap cannot hide a mismatch (each costs softWeight, more than 1% of any objective
+  // made of rounding terms alone) and spares branch and bound most of its work.
+  ip.setRelativeGap(0.01);
   IntegerProgram::Result r = ip.solve(timeLimitSeconds);
-  if (std::getenv("FCQL_DEBUG_SIDES"))
-    std::fprintf(stderr, "side lengths: %d segments, %d variables, %d constraints, forced %d, %s, %.2f s, objective %g\n", ns,
-                 ip.numVariables(), ip.numConstraints(), int(honourForced), toString(r.status), r.seconds, r.objective);
   if (!r.hasSolution()) {
     if (honourForced && r.status == IntegerProgram::Status::Infeasible) return solve(graph, targetEdgeLength, timeLimitSeconds, false);
     throw std::runtime_error("side lengths: " + r.message);

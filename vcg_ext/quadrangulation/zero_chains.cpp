@@ -5,13 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
 namespace fcql {
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 double polylineLength(const std::vector<Vec3>& p) {
   double l = 0;
@@ -48,67 +49,97 @@ public:
   }
 
   void split(int p) {
-    // Copy: the vector of patches grows below.
-    PatchSides parent = g_.patches[p];
-    const double um = 0.5 * (parent.u0 + parent.u1), vm = 0.5 * (parent.v0 + parent.v1);
-    std::array<std::vector<SideSegment>, 4> firstHalf, secondHalf;
-    std::array<int, 4> mid{};
-    for (int k = 0; k < 4; ++k) splitSide(p, k, firstHalf[k], secondHalf[k], mid[k]);
-    const PatchMap& map = unitMap(parent.layoutPatch);
-    const std::array<Vec2, 4> midUv = {Vec2(um, parent.v0), Vec2(parent.u1, vm), Vec2(um, parent.v1), Vec2(parent.u0, vm)};
-    const Vec2 centreUv(um, vm);
+    const PatchSides parent = g_.patches[p];  // copy: the vectors grow below
+    // The boundary as an n-gon: its segments in order, with the chart position of each node.
+    std::vector<SideSegment> edges;
+    for (const auto& side : parent.sides) edges.insert(edges.end(), side.begin(), side.end());
+    const int n = int(edges.size());
+    if (n < 4) throw std::runtime_error("zero chains: a patch with fewer than 4 boundary segments");
+    int chart = parent.chart;
+    std::vector<Vec2> nodeUv(n);
+    if (chart < 0) {
+      chart = addChart(parent, edges, nodeUv);
+    } else {
+      // A part split again: its nodes lie on the straight sides of its quad in the chart.
+      int e = 0;
+      for (int k = 0; k < 4; ++k) {
+        double total = 0, run = 0;
+        for (const auto& ss : parent.sides[k]) total += g_.segments[ss.segment].length;
+        for (const auto& ss : parent.sides[k]) {
+          const double t = total > 0 ? run / total : 0;
+          nodeUv[e++] = parent.chartCorners[k] * (1 - t) + parent.chartCorners[(k + 1) % 4] * t;
+          run += g_.segments[ss.segment].length;
+        }
+      }
+    }
+    const PatchMap& map = chartMap(chart);
+    Vec2 centreUv = Vec2::Zero();
+    for (const Vec2& uv : nodeUv) centreUv += uv / double(n);
     const int centre = addNode(map.pointAt(centreUv));
-    // Inner segments I_k from the middle of side k to the centre.
-    std::array<int, 4> inner{};
-    for (int k = 0; k < 4; ++k) {
+
+    // Halve every boundary segment; first/second half in the patch's direction of travel.
+    std::vector<SideSegment> firstHalf(n), secondHalf(n);
+    std::vector<int> middle(n);
+    std::vector<Vec2> middleUv(n);
+    std::map<int, std::array<int, 3>> halved;  // segment → (first half, second half, middle node)
+    for (int i = 0; i < n; ++i) {
+      const SideSegment ss = edges[i];
+      // A patch whose boundary meets itself (a torus cut open into one patch) uses a segment
+      // twice: it is halved once, both uses take the same halves.
+      auto it = halved.find(ss.segment);
+      if (it == halved.end()) {
+        int a, b;
+        const int m = splitSegment(ss.segment, p, a, b);
+        it = halved.emplace(ss.segment, std::array<int, 3>{{a, b, m}}).first;
+      }
+      const int a = it->second[0], b = it->second[1];
+      middle[i] = it->second[2];
+      firstHalf[i] = ss.reversed ? SideSegment{b, true, 0} : SideSegment{a, false, 0};
+      secondHalf[i] = ss.reversed ? SideSegment{a, true, 0} : SideSegment{b, false, 0};
+      middleUv[i] = 0.5 * (nodeUv[i] + nodeUv[(i + 1) % n]);
+    }
+    // Inner segments from each middle to the centre, straight in the chart.
+    std::vector<int> inner(n);
+    for (int i = 0; i < n; ++i) {
       LayoutSegment s;
       const int samples = 16;
-      s.polyline.push_back(g_.nodePosition(layout_, mid[k]));
-      for (int i = 1; i < samples; ++i) s.polyline.push_back(map.pointAt(midUv[k] + (centreUv - midUv[k]) * (double(i) / samples)));
+      s.polyline.push_back(g_.nodePosition(layout_, middle[i]));
+      for (int j = 1; j < samples; ++j)
+        s.polyline.push_back(map.pointAt(middleUv[i] + (centreUv - middleUv[i]) * (double(j) / samples)));
       s.polyline.push_back(g_.nodePosition(layout_, centre));
       s.length = polylineLength(s.polyline);
-      s.nodeA = mid[k];
+      s.nodeA = middle[i];
       s.nodeB = centre;
-      inner[k] = int(g_.segments.size());
+      inner[i] = int(g_.segments.size());
       g_.segments.push_back(std::move(s));
     }
-    // The four parts (corners counter-clockwise in the unit square).
-    auto child = [&](double u0, double u1, double v0, double v1, std::array<std::vector<SideSegment>, 4> sides,
-                     std::array<int, 4> corners) {
+    // One part per node i (where edge i−1 ends and edge i starts): middle(i−1), node i,
+    // middle(i), centre.
+    g_.patches[p].active = false;
+    for (int i = 0; i < n; ++i) {
+      const int prev = (i + n - 1) % n;
       PatchSides c;
-      c.sides = std::move(sides);
-      c.corners = corners;
+      c.sides = {std::vector<SideSegment>{secondHalf[prev]}, std::vector<SideSegment>{firstHalf[i]},
+                 std::vector<SideSegment>{{inner[i], false, 0}}, std::vector<SideSegment>{{inner[prev], true, 0}}};
+      const SideSegment& e = edges[i];
+      const int node = e.reversed ? g_.segments[e.segment].nodeB : g_.segments[e.segment].nodeA;
+      c.corners = {middle[prev], node, middle[i], centre};
       c.layoutPatch = parent.layoutPatch;
-      c.u0 = u0, c.u1 = u1, c.v0 = v0, c.v1 = v1;
+      c.chart = chart;
+      c.chartCorners = {middleUv[prev], nodeUv[i], middleUv[i], centreUv};
       c.original = false;
       c.forceEqual = true;
-      int id = int(g_.patches.size());
+      const int id = int(g_.patches.size());
       g_.patches.push_back(std::move(c));
-      return id;
-    };
-    auto fwd = [](int s) { return std::vector<SideSegment>{{s, false, 0}}; };
-    auto rev = [](int s) { return std::vector<SideSegment>{{s, true, 0}}; };
-    const auto& C = parent.corners;
-    int c00 = child(parent.u0, um, parent.v0, vm, {firstHalf[0], fwd(inner[0]), rev(inner[3]), secondHalf[3]},
-                    {C[0], mid[0], centre, mid[3]});
-    int c10 = child(um, parent.u1, parent.v0, vm, {secondHalf[0], firstHalf[1], fwd(inner[1]), rev(inner[0])},
-                    {mid[0], C[1], mid[1], centre});
-    int c11 = child(um, parent.u1, vm, parent.v1, {rev(inner[1]), secondHalf[1], firstHalf[2], fwd(inner[2])},
-                    {centre, mid[1], C[2], mid[2]});
-    int c01 = child(parent.u0, um, vm, parent.v1, {fwd(inner[3]), rev(inner[2]), secondHalf[2], firstHalf[3]},
-                    {mid[3], centre, mid[2], C[3]});
-    g_.patches[p].active = false;
-    // Who is on each side of each segment now.
-    std::array<int, 4> children = {c00, c10, c11, c01};
-    for (int c : children)
-      for (const auto& side : g_.patches[c].sides)
+      for (const auto& side : g_.patches[id].sides)
         for (const auto& ss : side) {
           LayoutSegment& s = g_.segments[ss.segment];
-          if (s.patchA == p) s.patchA = c;
-          else if (s.patchB == p) s.patchB = c;
-          else if (s.patchA < 0) s.patchA = c;
-          else if (s.patchB < 0 && s.patchA != c) s.patchB = c;
+          if (s.patchA == p) s.patchA = id;
+          else if (s.patchB == p) s.patchB = id;
+          else if (s.patchA < 0) s.patchA = id;
+          else if (s.patchB < 0 && s.patchA != id) s.patchB = id;
         }
+    }
   }
 
 private:
@@ -117,104 +148,109 @@ private:
     return g_.numLayoutVertices + int(g_.extraNodes.size()) - 1;
   }
 
-  const PatchMap& unitMap(int layoutPatch) {
-    auto& m = maps_[layoutPatch];
+  /// Maps the whole layout patch of `parent` onto a regular n-gon, edge i ← segment edges[i]
+  /// by arc length; fills the chart position of each node.
+  int addChart(const PatchSides& parent, const std::vector<SideSegment>& edges, std::vector<Vec2>& nodeUv) {
+    const int n = int(edges.size());
+    std::vector<Vec2> vertex(n);
+    for (int i = 0; i < n; ++i) vertex[i] = Vec2(std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n));
+    nodeUv = vertex;
+    // Arc-length position of every loop vertex along its side (as unitSquareBoundary walks it).
+    const PatchReport& rep = layout_.patches[parent.layoutPatch];
+    const int m = int(rep.loop.size());
+    int first = 0;
+    while (first < m && !rep.loopCorner[first]) ++first;
+    std::vector<int> sideOf(m, 0);
+    std::vector<double> along(m, 0);
+    int side = -1;
+    double run = 0;
+    for (int step = 0; step < m; ++step) {
+      const int k = (first + step) % m;
+      if (rep.loopCorner[k]) {
+        ++side;
+        run = 0;
+      } else {
+        run += (layout_.positions[rep.loop[k]] - layout_.positions[rep.loop[(k + m - 1) % m]]).norm();
+      }
+      sideOf[k] = std::min(side, 3);
+      along[k] = run;
+    }
+    // The segments of each side with their arc-length ranges, mapped onto the n-gon's edges.
+    PolygonChart chart;
+    chart.layoutPatch = parent.layoutPatch;
+    chart.loopUv.resize(m);
+    std::array<int, 4> firstEdge{};
+    for (int k = 0, e = 0; k < 4; ++k) {
+      firstEdge[k] = e;
+      e += int(parent.sides[k].size());
+    }
+    for (int pos = 0; pos < m; ++pos) {
+      const int k = sideOf[pos];
+      const auto& segs = parent.sides[k];
+      double start = 0;
+      std::size_t j = 0;
+      while (j + 1 < segs.size() && along[pos] > start + g_.segments[segs[j].segment].length) {
+        start += g_.segments[segs[j].segment].length;
+        ++j;
+      }
+      const double length = g_.segments[segs[j].segment].length;
+      const double t = length > 0 ? std::clamp((along[pos] - start) / length, 0.0, 1.0) : 0.0;
+      const int e = firstEdge[k] + int(j);
+      chart.loopUv[pos] = vertex[e] * (1 - t) + vertex[(e + 1) % n] * t;
+    }
+    g_.charts.push_back(std::move(chart));
+    return int(g_.charts.size()) - 1;
+  }
+
+  const PatchMap& chartMap(int chart) {
+    auto& m = maps_[chart];
     if (!m) {
-      std::vector<Vec2> unit = unitSquareBoundary(layout_, layoutPatch);
-      m = std::make_unique<PatchMap>(layout_, layoutPatch, trianglesOf_[layoutPatch], halfEdge_,
-                                     [&](int k) { return unit[k]; });
+      const PolygonChart& c = g_.charts[chart];
+      m = std::make_unique<PatchMap>(layout_, c.layoutPatch, trianglesOf_[c.layoutPatch], halfEdge_,
+                                     [&](int k) { return c.loopUv[k]; });
     }
     return *m;
   }
 
-  /// Halves side k of patch p at its arc-length middle, splitting the segment there (in every
-  /// patch that uses it) unless the middle is next to an existing node.
-  void splitSide(int p, int k, std::vector<SideSegment>& first, std::vector<SideSegment>& second, int& middle) {
-    const std::vector<SideSegment> side = g_.patches[p].sides[k];
-    double total = 0;
-    for (const auto& ss : side) total += g_.segments[ss.segment].length;
-    if (side.size() > 1) {
-      // The side carries t-junctions: split it at the one nearest to its middle, which removes
-      // that t-junction (it becomes a regular crossing with the new inner segment).
-      double run = 0, best = std::numeric_limits<double>::infinity();
-      std::size_t at = 1;
-      for (std::size_t i = 0; i + 1 < side.size(); ++i) {
-        run += g_.segments[side[i].segment].length;
-        if (std::abs(run - 0.5 * total) < best) best = std::abs(run - 0.5 * total), at = i + 1;
-      }
-      const SideSegment& ss = side[at];
-      middle = ss.reversed ? g_.segments[ss.segment].nodeB : g_.segments[ss.segment].nodeA;
-      first.assign(side.begin(), side.begin() + at);
-      second.assign(side.begin() + at, side.end());
-      return;
-    }
-    double run = 0;
-    for (std::size_t i = 0; i < side.size(); ++i) {
-      const SideSegment ss = side[i];
-      const LayoutSegment seg = g_.segments[ss.segment];
-      if (run + seg.length < 0.5 * total && i + 1 < side.size()) {
-        first.push_back(ss);
-        run += seg.length;
-        continue;
-      }
-      double f = seg.length > 0 ? (0.5 * total - run) / seg.length : 0.5;  // along the side's direction
-      if (f < 0.1 && i > 0) {  // the node before this segment is close enough
-        middle = ss.reversed ? seg.nodeB : seg.nodeA;
-        second.assign(side.begin() + i, side.end());
-        return;
-      }
-      if (f > 0.9 && i + 1 < side.size()) {
-        first.push_back(ss);
-        middle = ss.reversed ? seg.nodeA : seg.nodeB;
-        second.assign(side.begin() + i + 1, side.end());
-        return;
-      }
-      // Split the segment (in its own orientation) and replace it wherever it is used.
-      double fs = ss.reversed ? 1 - f : f;
-      auto halves = splitPolyline(seg.polyline, fs);
-      middle = addNode(halves.first.back());
-      LayoutSegment a, b;
-      a.polyline = halves.first;
-      b.polyline = halves.second;
-      a.length = polylineLength(a.polyline);
-      b.length = polylineLength(b.polyline);
-      a.nodeA = seg.nodeA, a.nodeB = middle;
-      b.nodeA = middle, b.nodeB = seg.nodeB;
-      a.patchA = b.patchA = seg.patchA;
-      a.patchB = b.patchB = seg.patchB;
-      const int ia = int(g_.segments.size()), ib = ia + 1;
-      g_.segments.push_back(std::move(a));
-      g_.segments.push_back(std::move(b));
-      for (int owner : {seg.patchA, seg.patchB}) {
-        if (owner < 0) continue;
-        PatchSides& ps = g_.patches[owner];
-        for (auto& list : ps.sides)
-          for (std::size_t j = 0; j < list.size(); ++j) {
-            if (list[j].segment != ss.segment) continue;
-            bool r = list[j].reversed;
-            std::vector<SideSegment> repl = r ? std::vector<SideSegment>{{ib, true, 0}, {ia, true, 0}}
-                                              : std::vector<SideSegment>{{ia, false, 0}, {ib, false, 0}};
-            list.erase(list.begin() + j);
-            list.insert(list.begin() + j, repl.begin(), repl.end());
-            break;
-          }
-        if (owner != p) {
-          ps.original = false;  // its side now has a node it did not have
-          ps.forceEqual = true;
+  /// Halves segment `s` at its arc-length middle: segments a (nodeA → middle) and b (middle →
+  /// nodeB) replace it wherever it is used. Patches other than `splitting` that use it gain a
+  /// t-junction and get hard opposite-side equalities. Returns the middle node.
+  int splitSegment(int s, int splitting, int& a, int& b) {
+    const LayoutSegment seg = g_.segments[s];
+    auto halves = splitPolyline(seg.polyline, 0.5);
+    const int middle = addNode(halves.first.back());
+    LayoutSegment first, second;
+    first.polyline = halves.first;
+    second.polyline = halves.second;
+    first.length = polylineLength(first.polyline);
+    second.length = polylineLength(second.polyline);
+    first.nodeA = seg.nodeA, first.nodeB = middle;
+    second.nodeA = middle, second.nodeB = seg.nodeB;
+    first.patchA = second.patchA = seg.patchA;
+    first.patchB = second.patchB = seg.patchB;
+    a = int(g_.segments.size());
+    b = a + 1;
+    g_.segments.push_back(std::move(first));
+    g_.segments.push_back(std::move(second));
+    for (int owner : {seg.patchA, seg.patchB}) {
+      if (owner < 0) continue;
+      PatchSides& ps = g_.patches[owner];
+      for (auto& list : ps.sides)
+        for (std::size_t j = 0; j < list.size(); ++j) {
+          if (list[j].segment != s) continue;
+          const bool r = list[j].reversed;
+          const std::vector<SideSegment> repl =
+              r ? std::vector<SideSegment>{{b, true, 0}, {a, true, 0}} : std::vector<SideSegment>{{a, false, 0}, {b, false, 0}};
+          list.erase(list.begin() + j);
+          list.insert(list.begin() + j, repl.begin(), repl.end());
+          ++j;
         }
+      if (owner != splitting) {
+        ps.original = false;  // its side now has a node it did not have
+        ps.forceEqual = true;
       }
-      // The halves, from the updated side list.
-      const auto& updated = g_.patches[p].sides[k];
-      first.clear();
-      second.clear();
-      bool before = true;
-      for (const auto& e : updated) {
-        (before ? first : second).push_back(e);
-        if ((e.reversed ? g_.segments[e.segment].nodeA : g_.segments[e.segment].nodeB) == middle) before = false;
-      }
-      return;
     }
-    throw std::runtime_error("cannot find the middle of a patch side");
+    return middle;
   }
 
   PatchGraph& g_;

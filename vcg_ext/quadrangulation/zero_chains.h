@@ -1,9 +1,12 @@
 // Zero chains (§4.4): patches whose opposite sides cannot get equal integer lengths because
-// of t-junctions are split in four, one Catmull–Clark step: a node at the middle of each side
-// (by arc length; the segment there is split, which may put a new t-junction on the
-// neighbour), a centre node, and four inner segments from the side middles to the centre,
-// traced as straight lines in the patch's map onto the unit square. The parts and the
-// neighbours that gained a t-junction get hard opposite-side equalities.
+// of t-junctions are split by one Catmull–Clark step. A patch whose sides hold n segments in
+// all (4 plus one per t-junction on its boundary) is an n-gon: it is mapped onto a regular
+// n-gon (each segment onto one edge, by arc length), every segment is halved, and the n-gon
+// becomes n quads around a centre node of valence n. The t-junctions of the patch become
+// corners of its parts (valence 3), so the strips that ran into them now end at the centre:
+// the chain of equalities that forced a zero is broken. The halved segments put new
+// t-junctions on the neighbours, which get hard opposite-side equalities. A part that is split
+// again is cut the same way inside its chart.
 #pragma once
 
 #include "quadrangulation/patch_sides.h"
