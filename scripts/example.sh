@@ -5,6 +5,7 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh
 example=${1:-rounded_box}
 out="out/$example"
-./build/bin/fcql layout --example "$example" --out "$out"
+./build/bin/fcql run --example "$example" --out "$out"
+./build/bin/fcql render "$out" --view both --size 480 --out "$out/picture.png"
 echo "outputs in $(pwd)/$out:"
 ls -l "$out"
