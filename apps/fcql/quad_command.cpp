@@ -41,6 +41,9 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
     progress(quiet, "zero chains: " + std::to_string(r.splitPatches) + " patches split in four (" +
                         std::to_string(r.splitRounds) + " rounds)");
   stats.set("quad.zero_chain_splits", r.splitPatches);
+  stats.set("quad.polygon_patches", r.polygonPatches);
+  if (r.polygonPatches > 0)
+    progress(quiet, std::to_string(r.polygonPatches) + " layout patches with 3, 5 or more corners cut into quads as n-gons");
   qs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress(quiet, "quad mesh: " + std::to_string(qs.mesh.numQuads()) + " quads, " + std::to_string(qs.mesh.numVertices()) +
                       " vertices, genus " + std::to_string(qs.report.genus) + ", " + std::to_string(qs.report.borderLoops) +

@@ -245,3 +245,37 @@ TEST(Quadrangulation, ZeroChainOfTheBunnyIsResolved) {
   EXPECT_TRUE(r.lengths.inconsistentPatches.empty());
   checkQuadMesh(*q, r, "bunny");
 }
+
+TEST(Quadrangulation, PatchWithFiveCornersIsCutIntoQuads) {
+  // Give one patch of the rounded box an extra corner in the middle of a side (as a layout with
+  // a wrongly placed corner would): it is quadrangulated as a pentagon, with a valence-5 centre.
+  auto q = layoutOf(makeRoundedBox());
+  PatchReport& patch = q->patches.patches[0];
+  int extra = -1;
+  for (std::size_t k = 0, run = 0; k < patch.loop.size(); ++k) {
+    run = patch.loopCorner[k] ? 0 : run + 1;
+    if (run == 4 && !q->patches.corner[patch.loop[k]]) {
+      extra = int(k);
+      break;
+    }
+  }
+  ASSERT_GE(extra, 0);
+  patch.loopCorner[extra] = 1;
+  q->patches.corner[patch.loop[extra]] = 1;
+  patch.corners = 5;
+  patch.valid = false;
+  patch.problem = "5 corners";
+  const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.03);
+  EXPECT_EQ(r.polygonPatches, 1);
+  EXPECT_TRUE(r.report.manifold) << r.report.problem;
+  EXPECT_EQ(r.report.genus, 0);
+  std::map<int, int> histogram;
+  for (int v : valences(r.mesh)) ++histogram[v];
+  EXPECT_GE(histogram[5], 1);
+  int defect = 0;
+  for (const auto& h : histogram) defect += (4 - h.first) * h.second;
+  EXPECT_EQ(defect, 4 * 2);
+  // A patch that is not a disk still fails with the reason.
+  patch.isDisk = false;
+  EXPECT_THROW(quadrangulateWithDefaults(*q, 0.03), std::runtime_error);
+}

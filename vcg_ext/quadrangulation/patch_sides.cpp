@@ -13,7 +13,10 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
   std::map<std::pair<int, int>, int> segmentOfEdge;  // undirected first edge of a segment -> id
   for (int p = 0; p < layout.numPatches(); ++p) {
     const PatchReport& rep = layout.patches[p];
-    if (!rep.valid)
+    // A disk with 4 corners is a quad patch; a disk with 3 or more other corners is an n-gon,
+    // kept whole here and split into n quads by splitPolygonPatches().
+    const bool polygon = !rep.valid && rep.isDisk && rep.corners >= 3;
+    if (!rep.valid && !polygon)
       throw std::runtime_error("patch " + std::to_string(p) + " cannot be quadrangulated: " + rep.problem);
     const int m = int(rep.loop.size());
     int first = -1;
@@ -44,14 +47,14 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
         int id = int(g.segments.size());
         g.segments.push_back(std::move(s));
         segmentOfEdge[key] = id;
-        ps.sides[side].push_back({id, false, chainStart});
+        ps.sides[polygon ? 0 : side].push_back({id, false, chainStart});
       } else {
         LayoutSegment& s = g.segments[it->second];
         std::vector<int> reversed(chain.rbegin(), chain.rend());
         if (s.vertices != reversed || s.patchB >= 0)
           throw std::runtime_error("patch " + std::to_string(p) + ": its sides do not match its neighbour's");
         s.patchB = p;
-        ps.sides[side].push_back({it->second, true, chainStart});
+        ps.sides[polygon ? 0 : side].push_back({it->second, true, chainStart});
       }
       chain.clear();
     };
@@ -67,14 +70,20 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
       if (isPatchCorner || layout.corner[v]) {
         closeSegment();
         if (isPatchCorner) {
-          if (++side > 3) throw std::runtime_error("patch " + std::to_string(p) + " has more than 4 corners");
-          ps.corners[side] = v;
+          ++side;
+          if (!polygon && side > 3) throw std::runtime_error("patch " + std::to_string(p) + " has more than 4 corners");
+          if (side <= 3) ps.corners[side] = v;
         }
         chain.assign(1, v);
         chainStart = k;
       }
     }
-    if (side != 3) throw std::runtime_error("patch " + std::to_string(p) + " does not have 4 corners");
+    if (polygon) {
+      ps.polygonCorners = side + 1;
+      ps.original = false;
+    } else if (side != 3) {
+      throw std::runtime_error("patch " + std::to_string(p) + " does not have 4 corners");
+    }
   }
   return g;
 }

@@ -10,6 +10,7 @@
 #include "layout/patch_layout.h"
 
 #include <array>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,9 @@ struct PatchSides {
   bool active = true;         ///< false once split
   bool original = true;       ///< sides are the layout patch's own boundary, segment for segment
   bool forceEqual = false;    ///< opposite sides equal as a hard constraint even with t-junctions
+  /// > 0 for a layout patch that is a disk with this many corners (3, 5, 6, ...): all its
+  /// segments are in sides[0], in order, and splitPolygonPatches() cuts it into quads.
+  int polygonCorners = 0;
 };
 
 /// A layout patch mapped onto a convex polygon (a regular n-gon, one edge per segment of its
@@ -51,6 +55,7 @@ struct PatchSides {
 struct PolygonChart {
   int layoutPatch = -1;
   std::vector<Vec2> loopUv;
+  std::map<int, Vec2> nodeUv;  ///< the n-gon's vertices: node id → position
 };
 
 /// Node ids: layout vertex ids, then numLayoutVertices + i for extraNodes[i] (side midpoints
@@ -67,7 +72,7 @@ struct PatchGraph {
   }
 };
 
-/// Throws std::runtime_error naming the first patch that is not a disk with 4 corners.
+/// Throws std::runtime_error naming the first patch that is not a disk with at least 3 corners.
 PatchGraph buildPatchGraph(const PatchLayout& layout);
 
 }  // namespace fcql

@@ -9,10 +9,20 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
   if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
   if (!(options.ilpTimeLimit >= 1)) throw std::invalid_argument("the side-length time limit must be at least 1 s");
-  const double timeLimit = std::min(options.ilpTimeLimit, kMaxSideLengthSeconds);
+  auto solveLengths = [&](const PatchGraph& graph) {
+    if (options.ilpTimeLimit > kQuickSideLengthSeconds) {
+      try {
+        return solveSideLengths(graph, options.targetEdgeLength, kQuickSideLengthSeconds);
+      } catch (const std::runtime_error&) {
+        // no solution in the short run: give it the whole limit
+      }
+    }
+    return solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit);
+  };
   QuadrangulationResult r;
   r.graph = buildPatchGraph(layout);
-  r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, timeLimit);
+  r.polygonPatches = splitPolygonPatches(r.graph, layout);
+  r.lengths = solveLengths(r.graph);
   while (!r.lengths.inconsistentPatches.empty()) {
     if (r.splitRounds >= options.maxSplitRounds)
       throw std::runtime_error(std::to_string(r.lengths.inconsistentPatches.size()) +
@@ -21,7 +31,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
-    r.lengths = solveSideLengths(r.graph, options.targetEdgeLength, timeLimit);
+    r.lengths = solveLengths(r.graph);
   }
   r.mesh = samplePatches(layout, r.graph, r.lengths);
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);

@@ -14,23 +14,26 @@ struct QuadrangulationResult {
   QuadMesh mesh;
   QuadMeshReport report;
   int splitRounds = 0;     ///< rounds of zero-chain splits
-  int splitPatches = 0;    ///< patches split in four, in all
+  int splitPatches = 0;    ///< patches split for zero chains, in all
+  int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
   SmoothingReport smoothing;
 };
 
-constexpr double kMaxSideLengthSeconds = 10;
+constexpr double kQuickSideLengthSeconds = 2;
 
 struct QuadrangulationOptions {
   double targetEdgeLength = 0;  ///< wanted quad edge length (> 0), in mesh units
-  /// Seconds per side-length program, at most kMaxSideLengthSeconds: the first solutions
-  /// lp_solve finds are already consistent, more time only improves the rounding a little.
-  double ilpTimeLimit = 10;
+  /// Seconds per side-length program. lp_solve finds its (consistent) solution quickly and
+  /// then spends the time proving optimality, so each program first runs for at most
+  /// kQuickSideLengthSeconds, and for the whole limit only if that found no solution.
+  double ilpTimeLimit = 60;
   int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
   SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions
 };
 
 /// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
-/// patch is not a 4-cornered disk or zero chains remain after `maxSplitRounds` rounds.
+/// patch is not a disk with at least 3 corners or zero chains remain after `maxSplitRounds`
+/// rounds. Disks with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
 
 /// The same with default smoothing.

@@ -48,6 +48,15 @@ public:
     }
   }
 
+  /// Charts the n-gon patch p now, while its segments are still the layout's own.
+  void chart(int p) {
+    PatchSides& ps = g_.patches[p];
+    std::vector<SideSegment> edges;
+    for (const auto& side : ps.sides) edges.insert(edges.end(), side.begin(), side.end());
+    std::vector<Vec2> nodeUv;
+    ps.chart = addChart(ps, edges, nodeUv);
+  }
+
   void split(int p) {
     const PatchSides parent = g_.patches[p];  // copy: the vectors grow below
     // The boundary as an n-gon: its segments in order, with the chart position of each node.
@@ -59,6 +68,34 @@ public:
     std::vector<Vec2> nodeUv(n);
     if (chart < 0) {
       chart = addChart(parent, edges, nodeUv);
+    } else if (parent.polygonCorners > 0) {
+      // A whole n-gon patch charted before its neighbours were split: the chart's vertices
+      // are known, the nodes added since lie between them by arc length.
+      const auto& known = g_.charts[chart].nodeUv;
+      std::vector<int> node(n);
+      std::vector<double> at(n + 1, 0);
+      for (int i = 0; i < n; ++i) {
+        const SideSegment& e = edges[i];
+        node[i] = e.reversed ? g_.segments[e.segment].nodeB : g_.segments[e.segment].nodeA;
+        at[i + 1] = at[i] + g_.segments[e.segment].length;
+      }
+      int first = -1;
+      for (int i = 0; i < n && first < 0; ++i)
+        if (known.count(node[i])) first = i;
+      if (first < 0) throw std::runtime_error("zero chains: a charted patch lost its corners");
+      for (int step = 0; step < n;) {
+        const int a = (first + step) % n;
+        int gap = 1;
+        while (!known.count(node[(a + gap) % n])) ++gap;
+        const Vec2 ua = known.at(node[a]), ub = known.at(node[(a + gap) % n]);
+        auto arc = [&](int k) { return at[(a + k) % n] + (a + k >= n ? at[n] : 0.0); };
+        const double span = arc(gap) - arc(0);
+        for (int k = 0; k < gap; ++k) {
+          const double t = span > 0 ? (arc(k) - arc(0)) / span : 0.0;
+          nodeUv[(a + k) % n] = ua * (1 - t) + ub * t;
+        }
+        step += gap;
+      }
     } else {
       // A part split again: its nodes lie on the straight sides of its quad in the chart.
       int e = 0;
@@ -155,9 +192,31 @@ private:
     std::vector<Vec2> vertex(n);
     for (int i = 0; i < n; ++i) vertex[i] = Vec2(std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n));
     nodeUv = vertex;
-    // Arc-length position of every loop vertex along its side (as unitSquareBoundary walks it).
     const PatchReport& rep = layout_.patches[parent.layoutPatch];
     const int m = int(rep.loop.size());
+    PolygonChart chart;
+    chart.layoutPatch = parent.layoutPatch;
+    chart.loopUv.resize(m);
+    for (int e = 0; e < n; ++e)
+      chart.nodeUv[edges[e].reversed ? g_.segments[edges[e].segment].nodeB : g_.segments[edges[e].segment].nodeA] = vertex[e];
+    if (std::all_of(edges.begin(), edges.end(), [&](const SideSegment& e) { return !g_.segments[e.segment].vertices.empty(); })) {
+      // Segments of the layout itself: each covers the loop positions from its loopStart on.
+      for (int e = 0; e < n; ++e) {
+        std::vector<int> chain = g_.segments[edges[e].segment].vertices;
+        if (edges[e].reversed) std::reverse(chain.begin(), chain.end());
+        const double total = g_.segments[edges[e].segment].length;
+        double run = 0;
+        for (std::size_t i = 0; i < chain.size(); ++i) {
+          if (i > 0) run += (layout_.positions[chain[i]] - layout_.positions[chain[i - 1]]).norm();
+          const double t = total > 0 ? std::clamp(run / total, 0.0, 1.0) : 0.0;
+          chart.loopUv[(edges[e].loopStart + int(i)) % m] = vertex[e] * (1 - t) + vertex[(e + 1) % n] * t;
+        }
+      }
+      g_.charts.push_back(std::move(chart));
+      return int(g_.charts.size()) - 1;
+    }
+    // Some segments were halved by neighbours' splits: arc-length position of every loop vertex
+    // along its side (as unitSquareBoundary walks it), then along the segments of that side.
     int first = 0;
     while (first < m && !rep.loopCorner[first]) ++first;
     std::vector<int> sideOf(m, 0);
@@ -176,9 +235,6 @@ private:
       along[k] = run;
     }
     // The segments of each side with their arc-length ranges, mapped onto the n-gon's edges.
-    PolygonChart chart;
-    chart.layoutPatch = parent.layoutPatch;
-    chart.loopUv.resize(m);
     std::array<int, 4> firstEdge{};
     for (int k = 0, e = 0; k < 4; ++k) {
       firstEdge[k] = e;
@@ -261,6 +317,18 @@ private:
 };
 
 }  // namespace
+
+int splitPolygonPatches(PatchGraph& graph, const PatchLayout& layout) {
+  std::vector<int> polygons;
+  for (int p = 0; p < int(graph.patches.size()); ++p)
+    if (graph.patches[p].active && graph.patches[p].polygonCorners > 0) polygons.push_back(p);
+  if (polygons.empty()) return 0;
+  Splitter splitter(graph, layout);
+  for (int p : polygons) splitter.chart(p);
+  for (int p : polygons)
+    if (graph.patches[p].active) splitter.split(p);
+  return int(polygons.size());
+}
 
 void splitPatches(PatchGraph& graph, const PatchLayout& layout, const std::vector<int>& patches) {
   Splitter splitter(graph, layout);

@@ -15,7 +15,11 @@
 
 namespace fcql {
 
-/// Splits the listed (active) patches of `graph` in four.
+/// Splits the listed (active) patches of `graph` as above.
 void splitPatches(PatchGraph& graph, const PatchLayout& layout, const std::vector<int>& patches);
+
+/// Splits every n-gon layout patch (PatchSides::polygonCorners > 0: a disk whose corners are
+/// not 4, which the layout reports as invalid) the same way, into quads; returns how many.
+int splitPolygonPatches(PatchGraph& graph, const PatchLayout& layout);
 
 }  // namespace fcql
