@@ -42,6 +42,10 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
                         std::to_string(r.splitRounds) + " rounds)");
   stats.set("quad.zero_chain_splits", r.splitPatches);
   stats.set("quad.polygon_patches", r.polygonPatches);
+  stats.set("quad.outside_points", qs.mesh.outsidePoints);
+  if (qs.mesh.outsidePoints > 0)
+    progress(quiet, "warning: " + std::to_string(qs.mesh.outsidePoints) +
+                        " grid points fell outside their patch map (degenerate patches): their quads are distorted");
   if (r.polygonPatches > 0)
     progress(quiet, std::to_string(r.polygonPatches) + " layout patches with 3, 5 or more corners cut into quads as n-gons");
   qs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -104,12 +104,10 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
     if (mn > bestMin) bestMin = mn, best = t, b0 = l0, b1 = l1, b2 = l2;
     if (mn >= 0) break;
   }
-  // A point just outside every mapped triangle (rounding at the border of the domain, or a
-  // sliver that the linear solve flattened) goes to the nearest one, its barycentric
-  // coordinates clamped; one farther out than a triangle's size means the map is broken.
-  if (best < 0 || bestMin < -1.0)
-    throw std::runtime_error("patch " + std::to_string(patch_) + ": a grid point falls outside its mapping");
+  if (best < 0) throw std::runtime_error("patch " + std::to_string(patch_) + ": its map has no usable triangle");
   if (bestMin < 0) {
+    // Outside every mapped triangle: the nearest one, barycentric coordinates clamped.
+    if (bestMin < -1e-6) ++outside_;
     b0 = std::max(0.0, b0), b1 = std::max(0.0, b1), b2 = std::max(0.0, b2);
     const double sum = b0 + b1 + b2;
     b0 /= sum, b1 /= sum, b2 /= sum;

@@ -20,8 +20,13 @@ public:
   PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
            const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv);
 
-  /// The surface point whose image is `uv`; throws std::runtime_error if it is outside.
+  /// The surface point whose image is `uv`. A `uv` outside every mapped triangle (a map that
+  /// rounding or a degenerate patch left not quite covering its rectangle) is put on the
+  /// nearest one and counted in outsidePoints(); throws std::runtime_error if the patch has no
+  /// usable triangle.
   Vec3 pointAt(const Vec2& uv) const;
+  /// How many pointAt() queries fell farther than rounding outside the map.
+  int outsidePoints() const { return outside_; }
 
   static std::uint64_t edgeKey(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
 
@@ -32,6 +37,7 @@ private:
   std::vector<int> triangles_;
   std::unordered_map<int, int> slotOf_;
   mutable std::vector<int> parent_;
+  mutable int outside_ = 0;
   std::unordered_map<int, Vec2> uv_;
 };
 

@@ -150,6 +150,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
           q.positions.push_back(map.pointAt(Vec2(i, j)));
           at(i, j) = q.numVertices() - 1;
         }
+      q.outsidePoints += map.outsidePoints();
     } else if (ps.chart >= 0) {
       // A part of a split patch: bilinear in its quad of the layout patch's polygon chart.
       auto& map = chartMaps[ps.chart];
@@ -186,6 +187,8 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         q.quadPatch.push_back(ps.layoutPatch);
       }
   }
+  for (const auto& m : unitMaps) q.outsidePoints += m.second->outsidePoints();
+  for (const auto& m : chartMaps) q.outsidePoints += m.second->outsidePoints();
   return q;
 }
 

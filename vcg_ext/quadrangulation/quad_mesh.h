@@ -13,6 +13,9 @@ struct QuadMesh {
   std::vector<Vec3> positions;
   std::vector<std::array<int, 4>> quads;  ///< counter-clockwise about the outward normal
   std::vector<int> quadPatch;             ///< layout patch each quad comes from
+  /// Grid points that fell outside their patch's map and were put on the nearest mapped
+  /// triangle (0 unless a patch map is degenerate; its quads are then distorted).
+  int outsidePoints = 0;
 
   int numVertices() const { return int(positions.size()); }
   int numQuads() const { return int(quads.size()); }

@@ -1,6 +1,7 @@
 #include "tracing/separatrix_graph.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -53,7 +54,9 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h) {
   for (int a = 0; a < int(h.arcs.size()); ++a)
     for (const PathSegment& s : h.arcs[a].path.segments)
       if (s.face >= 0) perFace[s.face].push_back({a, &s});
-  std::map<std::pair<int, int>, bool> tangential;  // pair -> any tangential crossing
+  // Every crossing of two arcs in a face, as (pair key, tangential); then one entry per pair,
+  // tangential if any of its crossings is.
+  std::vector<std::pair<std::uint64_t, char>> crossings;
   for (const auto& pieces : perFace)
     for (std::size_t i = 0; i < pieces.size(); ++i)
       for (std::size_t j = i + 1; j < pieces.size(); ++j) {
@@ -61,15 +64,20 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h) {
         const PathSegment& s = *pieces[i].segment;
         const PathSegment& t = *pieces[j].segment;
         if (relateChords(s.from, s.to, t.from, t.to) == ChordRelation::Disjoint) continue;
-        std::pair<int, int> key(std::min(pieces[i].arc, pieces[j].arc), std::max(pieces[i].arc, pieces[j].arc));
-        bool tang = (s.direction - t.direction) % 2 == 0;
-        auto it = tangential.find(key);
-        if (it == tangential.end()) tangential[key] = tang;
-        else it->second = it->second || tang;
+        const std::uint64_t lo = std::uint32_t(std::min(pieces[i].arc, pieces[j].arc));
+        const std::uint64_t hi = std::uint32_t(std::max(pieces[i].arc, pieces[j].arc));
+        crossings.push_back({(lo << 32) | hi, char((s.direction - t.direction) % 2 == 0)});
       }
+  std::sort(crossings.begin(), crossings.end());
   h.tangentialPairs.clear();
   h.orthogonalPairs.clear();
-  for (const auto& entry : tangential) (entry.second ? h.tangentialPairs : h.orthogonalPairs).push_back(entry.first);
+  for (std::size_t i = 0; i < crossings.size();) {
+    const std::uint64_t key = crossings[i].first;
+    bool tangential = false;
+    for (; i < crossings.size() && crossings[i].first == key; ++i) tangential = tangential || crossings[i].second;
+    const std::pair<int, int> pair(int(key >> 32), int(key & 0xffffffffu));
+    (tangential ? h.tangentialPairs : h.orthogonalPairs).push_back(pair);
+  }
 }
 
 }  // namespace fcql
