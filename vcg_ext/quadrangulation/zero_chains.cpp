@@ -63,7 +63,7 @@ public:
     std::vector<SideSegment> edges;
     for (const auto& side : parent.sides) edges.insert(edges.end(), side.begin(), side.end());
     const int n = int(edges.size());
-    if (n < 4) throw std::runtime_error("zero chains: a patch with fewer than 4 boundary segments");
+    if (n < 3) throw std::runtime_error("zero chains: a patch with fewer than 3 boundary segments");
     int chart = parent.chart;
     std::vector<Vec2> nodeUv(n);
     if (chart < 0) {
