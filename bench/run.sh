@@ -91,8 +91,8 @@ for name in "${names[@]}"; do
   rm -rf "${out:?}/$name"
   failed=""
   if ! /usr/bin/time -f "%M" -o "$out/$name.mem" timeout "$limit" "$fcql" run "${args[@]}" 2>"$out/$name.err"; then
-    failed=$(grep -v '^Command exited with' "$out/$name.err" | tail -1 | sed 's/^fcql: error: //; s/|/\\|/g')
-    grep -q '^Command exited with non-zero status 124' "$out/$name.mem" && failed="no result within ${limit} s (last stage: ${failed#fcql: })"
+    failed=$({ grep -v '^Command exited with' "$out/$name.err" || true; } | tail -1 | sed 's/^fcql: error: //; s/|/\\|/g')
+    if grep -q '^Command exited with non-zero status 124' "$out/$name.mem"; then failed="no result within ${limit} s"; fi
     [ -n "$failed" ] || failed="exit status without a message"
     echo "bench: $name: fcql run failed: $failed; running fcql layout for the layout figures" >&2
     /usr/bin/time -f "%M" -o "$out/$name.layout.mem" "$fcql" layout "${args[@]}" 2>"$out/$name.layout.err" || true
