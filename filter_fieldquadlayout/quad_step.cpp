@@ -1,25 +1,11 @@
 #include "quad_step.h"
 
+#include "metrics/quad_quality.h"
+
 #include <algorithm>
 #include <cstdio>
 
 namespace fcql_meshlab {
-
-double scaledJacobian(const fcql::Vec3& a, const fcql::Vec3& b, const fcql::Vec3& c,
-                      const fcql::Vec3& d) {
-  const fcql::Vec3 p[4] = {a, b, c, d};
-  fcql::Vec3 n = fcql::Vec3::Zero();
-  for (int i = 0; i < 4; ++i) n += p[i].cross(p[(i + 1) % 4]);
-  if (!(n.norm() > 0)) return 0;
-  n.normalize();
-  double worst = 1;
-  for (int i = 0; i < 4; ++i) {
-    const fcql::Vec3 e1 = p[(i + 1) % 4] - p[i], e2 = p[(i + 3) % 4] - p[i];
-    const double l = e1.norm() * e2.norm();
-    worst = std::min(worst, l > 0 ? e1.cross(e2).dot(n) / l : 0.0);
-  }
-  return worst;
-}
 
 QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult& layout,
                                const LayoutParameters& layoutParams,
@@ -39,7 +25,7 @@ QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult
     const auto& quad = q.quads[i];
     const fcql::Vec3 &a = q.positions[quad[0]], &b = q.positions[quad[1]],
                      &c = q.positions[quad[2]], &d = q.positions[quad[3]];
-    const float jacobian = float(scaledJacobian(a, b, c, d));
+    const float jacobian = float(fcql::scaledJacobian(q, int(i)));  // the CLI's measure
     r.scaledJacobian.push_back(jacobian);
     // Split along the shorter diagonal; it is edge 2 of the first triangle, edge 0 of the
     // second (edge i runs from corner i to corner i+1).

@@ -44,10 +44,4 @@ void storeQuadStep(MeshDocument& md, const QuadStepResult& result);
 /// Log lines: quads, vertices, irregular vertices, genus, splits, quality, time.
 std::vector<std::string> describeQuadStep(const QuadStepResult& result);
 
-/// Scaled Jacobian of the quad (a, b, c, d), counter-clockwise: the minimum over the corners
-/// of the normalised cross product of the two edges at the corner dotted with the quad normal
-/// (Newell's normal). 0 for a degenerate quad.
-double scaledJacobian(const fcql::Vec3& a, const fcql::Vec3& b, const fcql::Vec3& c,
-                      const fcql::Vec3& d);
-
 }  // namespace fcql_meshlab
