@@ -92,7 +92,10 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
   ip.setRelativeGap(0.01);
   IntegerProgram::Result r = ip.solve(timeLimitSeconds);
   if (!r.hasSolution()) {
-    if (honourForced && r.status == IntegerProgram::Status::Infeasible) return solve(graph, targetEdgeLength, timeLimitSeconds, false);
+    // Forced equalities that cannot all hold (or that lp_solve cannot settle in time): solve
+    // again with them soft; the patches that then disagree are split once more.
+    if (honourForced && (r.status == IntegerProgram::Status::Infeasible || r.status == IntegerProgram::Status::Failed))
+      return solve(graph, targetEdgeLength, timeLimitSeconds, false);
     throw std::runtime_error("side lengths: " + r.message);
   }
   SideLengths out;
