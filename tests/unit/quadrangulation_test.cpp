@@ -279,3 +279,35 @@ TEST(Quadrangulation, PatchWithFiveCornersIsCutIntoQuads) {
   patch.isDisk = false;
   EXPECT_THROW(quadrangulateWithDefaults(*q, 0.03), std::runtime_error);
 }
+
+TEST(Quadrangulation, CoarseInputsGiveAValidQuadMeshOrAClearError) {
+  // A tetrahedron (its layout has triangles and a patch the sampling cannot handle) and a flat
+  // square: the stage either returns a manifold quad mesh of the right topology or throws
+  // with a reason; it never returns a broken mesh.
+  SurfaceMesh tet({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+  std::vector<Vec3> grid;
+  std::vector<std::array<int, 3>> squares;
+  const int n = 10;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) grid.push_back({double(i) / n, double(j) / n, 0});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      squares.push_back({a, a + 1, a + n + 2});
+      squares.push_back({a, a + n + 2, a + n + 1});
+    }
+  int succeeded = 0;
+  for (const SurfaceMesh& mesh : {tet, SurfaceMesh(grid, squares)}) {
+    auto q = layoutOf(mesh);
+    try {
+      const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.05);
+      EXPECT_TRUE(r.report.manifold) << r.report.problem;
+      EXPECT_EQ(r.report.genus, q->mesh.genus());
+      EXPECT_EQ(r.report.borderLoops, q->mesh.numBorderLoops());
+      ++succeeded;
+    } catch (const std::runtime_error& e) {
+      EXPECT_GT(std::string(e.what()).size(), 10u);
+    }
+  }
+  EXPECT_GE(succeeded, 1) << "the flat square must quadrangulate";
+}

@@ -36,6 +36,9 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   r.mesh = samplePatches(layout, r.graph, r.lengths);
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
   r.report = checkQuadMesh(r.mesh);
+  if (!r.report.manifold)
+    throw std::runtime_error("the quad mesh came out non-manifold (" + r.report.problem +
+                             "): the layout has a patch the sampling cannot handle");
   return r;
 }
 

@@ -33,7 +33,8 @@ struct QuadrangulationOptions {
 
 /// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
 /// patch is not a disk with at least 3 corners or zero chains remain after `maxSplitRounds`
-/// rounds. Disks with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
+/// rounds, or if the quad mesh comes out non-manifold (never returned as if valid). Disks
+/// with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
 
 /// The same with default smoothing.

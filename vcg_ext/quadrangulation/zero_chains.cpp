@@ -64,6 +64,10 @@ public:
     for (const auto& side : parent.sides) edges.insert(edges.end(), side.begin(), side.end());
     const int n = int(edges.size());
     if (n < 3) throw std::runtime_error("zero chains: a patch with fewer than 3 boundary segments");
+    for (int i = 0; i < n; ++i)
+      if (edges[i].segment == edges[(i + 1) % n].segment)
+        throw std::runtime_error("patch " + std::to_string(parent.layoutPatch) +
+                                 " has a slit (a separatrix ends inside it): it cannot be cut into quads");
     int chart = parent.chart;
     std::vector<Vec2> nodeUv(n);
     if (chart < 0) {
