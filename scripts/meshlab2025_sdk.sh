@@ -17,6 +17,8 @@
 # Run as root the first time (it installs the few Debian packages MeshLab's CMake wants).
 # Prints the cache folder on stdout, progress on stderr.
 set -euo pipefail
+# shellcheck source=lib/debian.bash
+source "$(dirname "$0")/lib/debian.bash"
 
 cache=${FCQL_MESHLAB2025_CACHE:-/var/cache/fcql/meshlab-2025.07}
 version=2025.07~dfsg
@@ -33,16 +35,7 @@ fi
 packages=(build-essential cmake ca-certificates xz-utils
           qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
           libglu1-mesa-dev mesa-common-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "meshlab2025_sdk: installing ${missing[*]}" >&2
-  if [ "$(id -u)" -ne 0 ]; then echo "meshlab2025_sdk: need root to install: ${missing[*]}" >&2; exit 1; fi
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+install_missing_packages meshlab2025_sdk "${packages[@]}"
 
 start=$(date +%s)
 mkdir -p "$cache"
@@ -51,17 +44,14 @@ trap 'rm -rf "$work"' EXIT
 
 # ---- fetch the source package through a private apt state (no change to /etc/apt) ----
 orig="$work/meshlab_${version}.orig.tar.xz"
-mkdir -p "$work/lists/partial"
-echo "deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian sid main" > "$work/src.list"
-A=(-o "Dir::Etc::SourceList=$work/src.list" -o Dir::Etc::SourceParts=/dev/null -o "Dir::State::Lists=$work/lists")
 echo "meshlab2025_sdk: fetching Debian's meshlab source package (sid)" >&2
-apt-get "${A[@]}" update -qq
+private_apt_source_state "$work" sid
 # Unpinned first (whatever sid has now), then the revision known to work. Only the orig tarball
 # is used (the Debian patches touch neither meshlab-common nor io_base in a way that matters
 # here), so a missing .dsc/.debian.tar.xz of the newest revision (seen: -4 answering 404) is fine.
-(cd "$work" && apt-get "${A[@]}" source --download-only -qq meshlab >/dev/null 2>&1) || true
+(cd "$work" && apt-get "${PRIVATE_APT[@]}" source --download-only -qq meshlab >/dev/null 2>&1) || true
 if [ ! -f "$orig" ]; then
-  (cd "$work" && apt-get "${A[@]}" source --download-only -qq "meshlab=${version}-2" >/dev/null 2>&1) || true
+  (cd "$work" && apt-get "${PRIVATE_APT[@]}" source --download-only -qq "meshlab=${version}-2" >/dev/null 2>&1) || true
 fi
 if [ ! -f "$orig" ]; then
   echo "meshlab2025_sdk: apt-get source gave no orig tarball; taking it from the Debian pool" >&2
