@@ -14,7 +14,10 @@ QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult
   QuadStepResult r;
   r.targetEdgeLength = params.scale * mesh.boundingBoxDiagonal();
   progress(0, "side lengths and patch sampling");
-  r.quad = fcql::quadrangulate(layout.patches, r.targetEdgeLength, layoutParams.ilpTimeLimit);
+  fcql::QuadrangulationOptions options;
+  options.targetEdgeLength = r.targetEdgeLength;
+  options.ilpTimeLimit = layoutParams.ilpTimeLimit;
+  r.quad = fcql::quadrangulate(layout.patches, options);
 
   progress(90, "quad layer");
   const fcql::QuadMesh& q = r.quad.mesh;

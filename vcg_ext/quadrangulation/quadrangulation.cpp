@@ -42,13 +42,4 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   return r;
 }
 
-QuadrangulationResult quadrangulate(const PatchLayout& layout, double targetEdgeLength, double ilpTimeLimit,
-                                    int maxSplitRounds) {
-  QuadrangulationOptions options;
-  options.targetEdgeLength = targetEdgeLength;
-  options.ilpTimeLimit = ilpTimeLimit;
-  options.maxSplitRounds = maxSplitRounds;
-  return quadrangulate(layout, options);
-}
-
 }  // namespace fcql

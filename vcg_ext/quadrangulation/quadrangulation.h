@@ -37,8 +37,4 @@ struct QuadrangulationOptions {
 /// with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
 
-/// The same with default smoothing.
-QuadrangulationResult quadrangulate(const PatchLayout& layout, double targetEdgeLength, double ilpTimeLimit,
-                                    int maxSplitRounds = 8);
-
 }  // namespace fcql
