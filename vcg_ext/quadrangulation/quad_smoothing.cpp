@@ -39,13 +39,6 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
   return sharp;
 }
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::min(1.0, std::max(0.0, (p - a).dot(ab) / l2)) : 0.0;
-  return (p - (a + ab * t)).norm();
-}
-
 }  // namespace
 
 SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
@@ -63,7 +56,8 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     const auto& f = surfaceTriangles[t];
     Vec3 n = (surfacePositions[f[1]] - surfacePositions[f[0]]).cross(surfacePositions[f[2]] - surfacePositions[f[0]]);
     if (n.norm() > 0) normals[t] = n.normalized();
-    longestEdge2 = std::max(longestEdge2, (surfacePositions[f[1]] - surfacePositions[f[0]]).squaredNorm());
+    for (int i = 0; i < 3; ++i)
+      longestEdge2 = std::max(longestEdge2, (surfacePositions[f[(i + 1) % 3]] - surfacePositions[f[i]]).squaredNorm());
   }
   const auto sharp = sharpEdges(surfacePositions, surfaceTriangles, normals, options.sharpAngleDeg);
 
@@ -85,20 +79,6 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  // Feature vertices: on (within a tiny tolerance of) a sharp edge of the nearest triangles.
-  const double tolerance = 1e-7 * std::sqrt(longestEdge2) + 1e-12;
-  for (int v = 0; v < nv; ++v) {
-    if (fixed[v] || neighbours[v].empty()) continue;
-    const ClosestPoint cp = index.closest(quads.positions[v]);
-    const auto& f = surfaceTriangles[cp.triangle];
-    for (int i = 0; i < 3 && !fixed[v]; ++i)
-      if (sharp[cp.triangle][i] &&
-          distanceToSegment(quads.positions[v], surfacePositions[f[i]], surfacePositions[f[(i + 1) % 3]]) <=
-              std::max(tolerance, 1e-6 * (surfacePositions[f[i]] - surfacePositions[f[(i + 1) % 3]]).norm()))
-        fixed[v] = 1;
-  }
-  for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
-
   // Feature lines: the sharp edges as degenerate triangles (a, b, b), for snapping.
   std::vector<std::array<int, 3>> featureSegments;
   for (std::size_t t = 0; t < surfaceTriangles.size(); ++t)
@@ -107,6 +87,16 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
         featureSegments.push_back({surfaceTriangles[t][i], surfaceTriangles[t][(i + 1) % 3], surfaceTriangles[t][(i + 1) % 3]});
   std::unique_ptr<ClosestPointIndex> features;
   if (!featureSegments.empty()) features = std::make_unique<ClosestPointIndex>(surfacePositions, featureSegments);
+
+  // Feature vertices: on (within a tiny tolerance of) a sharp edge; they stay.
+  const double tolerance = 1e-7 * std::sqrt(longestEdge2) + 1e-12;
+  for (int v = 0; v < nv && features; ++v) {
+    if (fixed[v] || neighbours[v].empty()) continue;
+    const ClosestPoint cp = features->closest(quads.positions[v]);
+    const auto& e = featureSegments[cp.triangle];
+    if (cp.distance <= std::max(tolerance, 1e-6 * (surfacePositions[e[1]] - surfacePositions[e[0]]).norm())) fixed[v] = 1;
+  }
+  for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
 
   std::vector<Vec3> next(quads.positions);
   for (int it = 0; it < options.iterations; ++it) {
