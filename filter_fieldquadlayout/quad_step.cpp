@@ -64,10 +64,15 @@ std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
                   std::to_string(rep.irregularVertices) + " irregular vertices, genus " +
                   std::to_string(rep.genus) + ", " + std::to_string(rep.borderLoops) +
                   " border loops (target edge length " + target + ")");
-  if (!rep.manifold) lines.push_back("Warning: the quad mesh is not manifold: " + rep.problem);
   if (r.quad.splitPatches > 0)
     lines.push_back("Zero chains: " + std::to_string(r.quad.splitPatches) +
-                    " patches split in four (" + std::to_string(r.quad.splitRounds) + " rounds)");
+                    " patches split by Catmull-Clark steps (" + std::to_string(r.quad.splitRounds) + " rounds)");
+  if (r.quad.polygonPatches > 0)
+    lines.push_back(std::to_string(r.quad.polygonPatches) +
+                    " layout patches with 3, 5 or more corners cut into quads as n-gons");
+  if (q.outsidePoints > 0)
+    lines.push_back("Warning: " + std::to_string(q.outsidePoints) +
+                    " grid points fell outside their patch map (degenerate patches): their quads are distorted");
   if (!r.scaledJacobian.empty()) {
     double sum = 0, low = 1;
     int inverted = 0;

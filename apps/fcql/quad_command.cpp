@@ -38,7 +38,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   qs.mesh = std::move(r.mesh);
   qs.report = r.report;
   if (r.splitPatches > 0)
-    progress(quiet, "zero chains: " + std::to_string(r.splitPatches) + " patches split in four (" +
+    progress(quiet, "zero chains: " + std::to_string(r.splitPatches) + " patches split by Catmull-Clark steps (" +
                         std::to_string(r.splitRounds) + " rounds)");
   stats.set("quad.zero_chain_splits", r.splitPatches);
   stats.set("quad.polygon_patches", r.polygonPatches);
@@ -51,8 +51,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   qs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress(quiet, "quad mesh: " + std::to_string(qs.mesh.numQuads()) + " quads, " + std::to_string(qs.mesh.numVertices()) +
                       " vertices, genus " + std::to_string(qs.report.genus) + ", " + std::to_string(qs.report.borderLoops) +
-                      " border loops, " + std::to_string(qs.report.irregularVertices) + " irregular vertices" +
-                      (qs.report.manifold ? "" : ", NOT MANIFOLD: " + qs.report.problem));
+                      " border loops, " + std::to_string(qs.report.irregularVertices) + " irregular vertices");
   stats.set("params.target_edge_length", target);
   stats.set("params.smooth", options.smoothing.iterations);
   stats.set("quad.faces", qs.mesh.numQuads());
