@@ -311,3 +311,40 @@ TEST(Quadrangulation, CoarseInputsGiveAValidQuadMeshOrAClearError) {
   }
   EXPECT_GE(succeeded, 1) << "the flat square must quadrangulate";
 }
+
+TEST(Quadrangulation, SmoothingPutsVerticesOnSharpEdges) {
+  // The cube's 12 sharp edges are separatrices of its layout, traced through the triangles next
+  // to them: smoothing snaps the quad vertices close to the edges onto them, keeps those already
+  // there, and none leaves the surface.
+  SurfaceMesh cube = test::sharpCube(6);
+  const CrossField field = test::axisField(cube);
+  auto q = layoutOf(cube, &field);
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.05 * q->mesh.boundingBoxDiagonal();
+  options.smoothing.iterations = 0;
+  const QuadrangulationResult raw = quadrangulate(q->patches, options);
+  options.smoothing.iterations = 10;
+  const QuadrangulationResult smooth = quadrangulate(q->patches, options);
+  ASSERT_EQ(raw.mesh.numVertices(), smooth.mesh.numVertices());
+  auto onCubeEdge = [](const Vec3& p) {
+    int atFace = 0;
+    for (int k = 0; k < 3; ++k) atFace += std::abs(std::abs(p[k]) - 1) < 1e-9;
+    return atFace >= 2;
+  };
+  int rawOnEdges = 0, smoothOnEdges = 0;
+  for (int v = 0; v < raw.mesh.numVertices(); ++v) {
+    if (onCubeEdge(raw.mesh.positions[v])) {
+      ++rawOnEdges;
+      EXPECT_EQ(raw.mesh.positions[v], smooth.mesh.positions[v]) << "vertex " << v << " left a sharp edge";
+    }
+    smoothOnEdges += onCubeEdge(smooth.mesh.positions[v]);
+    EXPECT_LT(std::abs(smooth.mesh.positions[v].cwiseAbs().maxCoeff() - 1), 1e-9) << "vertex " << v << " is off the cube";
+  }
+  // The 8 corners are there from the start; vertices of the separatrices that run within a
+  // third of a quad edge of the cube's edges are snapped onto them.
+  EXPECT_GE(rawOnEdges, 8);
+  EXPECT_GT(smoothOnEdges, rawOnEdges + 12);
+  EXPECT_GT(smooth.smoothing.snappedMoves, 0);
+  std::cout << "cube: " << rawOnEdges << " vertices on sharp edges before smoothing, " << smoothOnEdges << " after"
+            << std::endl;
+}
