@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <unordered_map>
 
@@ -13,10 +14,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const double kCos45 = std::cos(kPi / 4) - 1e-12;
 
-struct Arc {
+/// An arc while the graph is built: its source slot and the stored arc.
+struct BuildArc {
   int from;
-  int to;
-  float weight;
+  GeodesicGraph::Arc arc;
 };
 
 /// Eq. 1 of the paper for a move w whose field direction is d (unit).
@@ -56,10 +57,15 @@ public:
   explicit GeodesicGraphBuilder(GeodesicGraph& g) : g_(g), mesh_(*g.mesh_), field_(*g.field_), analysis_(*g.analysis_) {}
 
   void build() {
+    combFaces();
     buildPorts();
-    const int numSlots = g_.portBase_ + 2 * int(g_.ports_.size());
+    const long long slots = 8LL * g_.sampling_.numSamples() + 2LL * g_.ports_.size();
+    if (slots >= (1LL << 30))
+      throw std::runtime_error("graph G would have " + std::to_string(slots) +
+                               " node slots, more than it can hold (2^30): use a larger phi");
+    const int numSlots = int(slots);
     int threads = g_.params_.threads > 0 ? g_.params_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::vector<Arc>> perThread(threads);
+    std::vector<std::vector<BuildArc>> perThread(threads);
     std::atomic<int> nextChunk{0};
     const int chunk = 256;
     auto work = [&](int t) {
@@ -75,48 +81,68 @@ public:
     for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
     work(0);
     for (auto& th : pool) th.join();
-    std::vector<Arc> portArcs;
+    std::vector<BuildArc> portArcs;
     for (int p = 0; p < int(g_.ports_.size()); ++p) sourceArcs(p, portArcs);
 
     // Counting sort into CSR; within a node, arcs keep a deterministic order (by target).
-    std::vector<std::int64_t>& begin = g_.arcBegin_;
+    std::vector<std::uint32_t>& begin = g_.arcBegin_;
     begin.assign(numSlots + 1, 0);
-    auto count = [&](const std::vector<Arc>& arcs) { for (const Arc& a : arcs) ++begin[a.from + 1]; };
+    long long total = long(portArcs.size());
+    for (auto& v : perThread) total += long(v.size());
+    if (total >= (1LL << 32))
+      throw std::runtime_error("graph G would have " + std::to_string(total) +
+                               " arcs, more than it can hold (2^32): use a larger phi");
+    auto count = [&](const std::vector<BuildArc>& arcs) { for (const BuildArc& a : arcs) ++begin[a.from + 1]; };
     for (auto& v : perThread) count(v);
     count(portArcs);
     for (int i = 0; i < numSlots; ++i) begin[i + 1] += begin[i];
-    g_.arcTarget_.resize(begin[numSlots]);
-    g_.arcWeight_.resize(begin[numSlots]);
-    std::vector<std::int64_t> fill(begin.begin(), begin.end() - 1);
+    g_.arcs_.resize(begin[numSlots]);
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
     std::vector<char> live(numSlots, 0);
-    auto place = [&](std::vector<Arc>& arcs) {
-      for (const Arc& a : arcs) {
-        std::int64_t at = fill[a.from]++;
-        g_.arcTarget_[at] = a.to;
-        g_.arcWeight_[at] = a.weight;
-        live[a.from] = live[a.to] = 1;
+    auto place = [&](std::vector<BuildArc>& arcs) {
+      for (const BuildArc& a : arcs) {
+        g_.arcs_[fill[a.from]++] = a.arc;
+        live[a.from] = live[GeodesicGraph::targetNode(a.arc)] = 1;
       }
-      std::vector<Arc>().swap(arcs);
+      std::vector<BuildArc>().swap(arcs);
     };
     for (auto& v : perThread) place(v);
     place(portArcs);
-    for (int n = 0; n < numSlots; ++n) {
-      std::int64_t b = begin[n], e = begin[n + 1];
-      if (e - b < 2) continue;
-      std::vector<std::pair<int, float>> tmp;
-      for (std::int64_t a = b; a < e; ++a) tmp.emplace_back(g_.arcTarget_[a], g_.arcWeight_[a]);
-      std::sort(tmp.begin(), tmp.end());
-      for (std::int64_t a = b; a < e; ++a) g_.arcTarget_[a] = tmp[a - b].first, g_.arcWeight_[a] = tmp[a - b].second;
-    }
+    for (int n = 0; n < numSlots; ++n)
+      std::sort(g_.arcs_.begin() + begin[n], g_.arcs_.begin() + begin[n + 1],
+                [](const GeodesicGraph::Arc& a, const GeodesicGraph::Arc& b) {
+                  return a.target != b.target ? a.target < b.target : a.weight < b.weight;
+                });
     g_.numLiveNodes_ = std::count(live.begin(), live.end(), 1);
-    g_.borderTerminal_.assign(numSlots, 0);
-    const EdgeSampling& es = g_.sampling_;
-    for (int q = 0; q < es.numSamples(); ++q)
-      if (es.edgeFace[es.sampleEdge[q]][1] < 0)
-        for (int j = 0; j < 4; ++j) g_.borderTerminal_[GeodesicGraph::edgeNode(q, 1, j)] = 1;
   }
 
 private:
+  /// Rotations r(t) along a breadth-first spanning tree of each connected component, so that
+  /// the matching across tree edges, m(t, i) + r(t) − r(t'), is zero.
+  void combFaces() {
+    const int nf = mesh_.numFaces();
+    std::vector<int>& r = g_.faceRotation_;
+    r.assign(nf, -1);
+    std::vector<int> queue;
+    queue.reserve(nf);
+    for (int root = 0; root < nf; ++root) {
+      if (r[root] >= 0) continue;
+      r[root] = 0;
+      queue.assign(1, root);
+      for (std::size_t h = 0; h < queue.size(); ++h) {
+        int f = queue[h];
+        for (int i = 0; i < 3; ++i) {
+          int g = mesh_.adjacentFace(f, i);
+          if (g < 0 || r[g] >= 0) continue;
+          r[g] = mod4(r[f] + analysis_.matching[f][i]);
+          queue.push_back(g);
+        }
+      }
+    }
+  }
+
+  int combed(int f, int dirInF) const { return mod4(dirInF - g_.faceRotation_[f]); }
+
   void buildPorts() {
     const auto& sings = analysis_.singularities;
     g_.firstPort_.assign(sings.size() + 1, 0);
@@ -200,16 +226,17 @@ private:
   }
 
   /// The node at sample q entering the face across local edge `i` of face f, direction dirInF
-  /// of f carried across; the border terminal if there is no face.
+  /// of f carried across, as stored in an arc: the border terminal (complemented) if there is
+  /// no face.
   int nodeAcross(int f, int i, int q, int dirInF) const {
     int g = mesh_.adjacentFace(f, i);
-    if (g < 0) return GeodesicGraph::edgeNode(q, 1, dirInF);
+    if (g < 0) return ~g_.edgeNode(q, 1, combed(f, dirInF));
     int e = mesh_.edgeId(f, i);
     int dir = mod4(dirInF + analysis_.matching[f][i]);
-    return GeodesicGraph::edgeNode(q, g_.sampling_.sideOf(e, g), dir);
+    return g_.edgeNode(q, g_.sampling_.sideOf(e, g), combed(g, dir));
   }
 
-  void faceArcs(int f, std::vector<Arc>& out) const {
+  void faceArcs(int f, std::vector<BuildArc>& out) const {
     const EdgeSampling& es = g_.sampling_;
     const double alpha = g_.params_.alpha;
     Vec3 dirs[4];
@@ -222,14 +249,14 @@ private:
       for (int qa = es.firstSample[ea]; qa < es.firstSample[ea] + es.sampleCount[ea]; ++qa) {
         const Vec3& from = es.samplePosition[qa];
         for (int j = 0; j < 4; ++j) {
-          int node = GeodesicGraph::edgeNode(qa, sideA, j);
+          int node = g_.edgeNode(qa, sideA, combed(f, j));
           for (int b = 0; b < 3; ++b) {
             if (b == a) continue;
             int eb = mesh_.edgeId(f, b);
             for (int qb = es.firstSample[eb]; qb < es.firstSample[eb] + es.sampleCount[eb]; ++qb) {
               Vec3 w = es.samplePosition[qb] - from;
               if (!withinSector(w, dirs[j])) continue;
-              out.push_back({node, nodeAcross(f, b, qb, j), float(anisotropicLength(w, dirs[j], alpha))});
+              out.push_back({node, {nodeAcross(f, b, qb, j), float(anisotropicLength(w, dirs[j], alpha))}});
             }
           }
           // Sink of a port of the singular vertex opposite this edge.
@@ -241,13 +268,13 @@ private:
           double unwrapped = 0;
           int p = portAt(s, k, from, &unwrapped);
           if (p < 0 || mod4(carriedPortDirection(p, k, unwrapped) + 2) != j) continue;
-          out.push_back({node, g_.sinkNode(p), float(anisotropicLength(w, dirs[j], alpha))});
+          out.push_back({node, {g_.sinkNode(p), float(anisotropicLength(w, dirs[j], alpha))}});
         }
       }
     }
   }
 
-  void sourceArcs(int p, std::vector<Arc>& out) const {
+  void sourceArcs(int p, std::vector<BuildArc>& out) const {
     const PortNode& pn = g_.ports_[p];
     const int s = pn.singularity;
     const Vec3& apex = mesh_.position(pn.vertex);
@@ -265,7 +292,7 @@ private:
         Vec3 d = field_.direction(mesh_, f, dir);
         Vec3 w = to - apex;
         if (!withinSector(w, d)) continue;
-        out.push_back({g_.sourceNode(p), nodeAcross(f, i, q, dir), float(anisotropicLength(w, d, g_.params_.alpha))});
+        out.push_back({g_.sourceNode(p), {nodeAcross(f, i, q, dir), float(anisotropicLength(w, d, g_.params_.alpha))}});
       }
     }
   }

@@ -2,16 +2,23 @@
 //
 // Nodes
 //  - Edge nodes: one per auxiliary point s, incident triangle t and cross direction j of t,
-//    meaning "a path standing at s that continues into t following direction j". Numbered
-//    densely: edgeNode(sample, side, j) = (sample·2 + side)·4 + j, side = side of t w.r.t. the
-//    edge (see EdgeSampling). Directions whose ±45° sector is hidden behind the edge have no
-//    arcs (at most 3 per point per triangle are live).
-//  - Border terminals: slots (sample·2 + 1)·4 + j of a sample on a border edge (that side has
-//    no triangle): reaching one means the path hit the border there, following direction j of
+//    meaning "a path standing at s that continues into t following direction j". Directions
+//    whose ±45° sector is hidden behind the edge have no arcs (at most 3 per point per
+//    triangle are live).
+//  - Border terminals: the slots of side 1 of a sample on a border edge (that side has no
+//    triangle): reaching one means the path hit the border there, following direction j of
 //    the triangle on side 0.
 //  - Port nodes: for port p (numbered over all singular vertices in FieldAnalysis order), one
 //    source node sourceNode(p) and one sink node sinkNode(p).
-// Arcs (stored in flat CSR arrays, targets and float weights)
+// Numbering. Slots are laid out so that one search touches a compact part of memory. The
+// faces are combed: a rotation r(t) per face, chosen along a spanning tree so that the
+// matching across most edges becomes zero; the combed direction of direction j of t is
+// j − r(t). A field-coherent path keeps its combed direction except where it crosses a
+// non-tree edge, so slots are numbered combed direction first:
+//    slot = (combed · numSamples + sample) · 2 + side,   side = side of t w.r.t. the edge
+//    (see EdgeSampling), then the port nodes.
+// Arcs (stored in one flat CSR array of {target, weight}; a target that is a border terminal
+// is stored complemented, ~node, so that searches that drop such paths need no lookup)
 //  - From an edge node (s, t, j) to every auxiliary point s' on the two other edges of t whose
 //    direction s' − s lies within 45° of direction j of t (its sector); the target is the node
 //    of s' in the triangle t' across that edge, carrying the transported direction
@@ -64,31 +71,52 @@ public:
   const EdgeSampling& sampling() const { return sampling_; }
   const TracingParameters& parameters() const { return params_; }
 
-  static int edgeNode(int sample, int side, int dir) { return (sample * 2 + side) * 4 + dir; }
-  static int nodeSample(int node) { return node / 8; }
-  static int nodeSide(int node) { return (node / 4) % 2; }
-  static int nodeDirection(int node) { return node % 4; }
+  int numSamples() const { return sampling_.numSamples(); }
+  /// Slot of the edge node at `sample`, on `side`, with combed direction `combed`.
+  int edgeNode(int sample, int side, int combed) const { return (combed * numSamples() + sample) * 2 + side; }
+  int nodeSample(int node) const { return (node >> 1) % numSamples(); }
+  int nodeSide(int node) const { return node & 1; }
+  /// Direction index of an edge node in the face it continues into (for a border terminal:
+  /// in the face on side 0).
+  int nodeDirection(int node) const {
+    int e = sampling_.sampleEdge[nodeSample(node)];
+    int f = sampling_.edgeFace[e][nodeSide(node)];
+    if (f < 0) f = sampling_.edgeFace[e][0];
+    return (node / (2 * numSamples()) + faceRotation_[f]) & 3;
+  }
+  /// Combing rotation r(t) of face t (see Numbering above).
+  int faceRotation(int f) const { return faceRotation_[f]; }
   int sourceNode(int port) const { return portBase_ + 2 * port; }
   int sinkNode(int port) const { return portBase_ + 2 * port + 1; }
   bool isPortNode(int node) const { return node >= portBase_; }
   int portOfNode(int node) const { return (node - portBase_) / 2; }
   bool isSinkNode(int node) const { return isPortNode(node) && (node - portBase_) % 2 == 1; }
-  bool isBorderTerminal(int node) const { return borderTerminal_[node] != 0; }
+  bool isBorderTerminal(int node) const {
+    return !isPortNode(node) && nodeSide(node) == 1 && sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][1] < 0;
+  }
   /// Face an edge node continues into (−1 for a border terminal).
   int nodeFace(int node) const {
     return sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][nodeSide(node)];
   }
 
+  /// An arc of G: `target` is the node reached, complemented (~node, negative) when that node
+  /// is a border terminal; weight = Eq. 1.
+  struct Arc {
+    int target;
+    float weight;
+  };
+  static bool entersBorder(const Arc& a) { return a.target < 0; }
+  static int targetNode(const Arc& a) { return a.target < 0 ? ~a.target : a.target; }
+
   int numNodeSlots() const { return int(arcBegin_.size()) - 1; }
   const std::vector<PortNode>& ports() const { return ports_; }
-  /// Arcs leaving `node`: indices [arcBegin(node), arcBegin(node+1)).
-  std::int64_t arcBegin(int node) const { return arcBegin_[node]; }
-  int arcTarget(std::int64_t arc) const { return arcTarget_[arc]; }
-  float arcWeight(std::int64_t arc) const { return arcWeight_[arc]; }
+  /// Arcs leaving `node`: [arcsBegin(node), arcsEnd(node)).
+  const Arc* arcsBegin(int node) const { return arcs_.data() + arcBegin_[node]; }
+  const Arc* arcsEnd(int node) const { return arcs_.data() + arcBegin_[node + 1]; }
 
   /// |G|: nodes with at least one arc (in or out) and arcs.
   long numNodes() const { return numLiveNodes_; }
-  long numArcs() const { return long(arcTarget_.size()); }
+  long numArcs() const { return long(arcs_.size()); }
 
   /// Index of the port whose flattened sector at singular vertex `singularity` contains the
   /// flattened angle `flat`; −1 if none.
@@ -106,10 +134,9 @@ private:
   std::vector<PortNode> ports_;
   std::vector<int> firstPort_;
   int portBase_ = 0;
-  std::vector<std::int64_t> arcBegin_;
-  std::vector<int> arcTarget_;
-  std::vector<float> arcWeight_;
-  std::vector<unsigned char> borderTerminal_;  ///< per node slot
+  std::vector<int> faceRotation_;
+  std::vector<std::uint32_t> arcBegin_;  ///< per slot, plus one
+  std::vector<Arc> arcs_;
   long numLiveNodes_ = 0;
   friend class GeodesicGraphBuilder;
 };

@@ -54,29 +54,30 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h) {
   for (int a = 0; a < int(h.arcs.size()); ++a)
     for (const PathSegment& s : h.arcs[a].path.segments)
       if (s.face >= 0) perFace[s.face].push_back({a, &s});
-  // Every crossing of two arcs in a face, as (pair key, tangential); then one entry per pair,
-  // tangential if any of its crossings is.
-  std::vector<std::pair<std::uint64_t, char>> crossings;
-  for (const auto& pieces : perFace)
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      for (std::size_t j = i + 1; j < pieces.size(); ++j) {
-        if (pieces[i].arc == pieces[j].arc) continue;
-        const PathSegment& s = *pieces[i].segment;
-        const PathSegment& t = *pieces[j].segment;
-        if (relateChords(s.from, s.to, t.from, t.to) == ChordRelation::Disjoint) continue;
-        const std::uint64_t lo = std::uint32_t(std::min(pieces[i].arc, pieces[j].arc));
-        const std::uint64_t hi = std::uint32_t(std::max(pieces[i].arc, pieces[j].arc));
-        crossings.push_back({(lo << 32) | hi, char((s.direction - t.direction) % 2 == 0)});
-      }
-  std::sort(crossings.begin(), crossings.end());
+  // For each arc a, the arcs b > a it meets in some face, marked tangential if they do so in
+  // any; pairs come out ordered by (a, b). A marker per arc replaces sorting every crossing.
   h.tangentialPairs.clear();
   h.orthogonalPairs.clear();
-  for (std::size_t i = 0; i < crossings.size();) {
-    const std::uint64_t key = crossings[i].first;
-    bool tangential = false;
-    for (; i < crossings.size() && crossings[i].first == key; ++i) tangential = tangential || crossings[i].second;
-    const std::pair<int, int> pair(int(key >> 32), int(key & 0xffffffffu));
-    (tangential ? h.tangentialPairs : h.orthogonalPairs).push_back(pair);
+  const int n = int(h.arcs.size());
+  std::vector<unsigned char> met(n, 0);  // bit 0: met, bit 1: tangentially
+  std::vector<int> others;
+  for (int a = 0; a < n; ++a) {
+    for (const PathSegment& s : h.arcs[a].path.segments) {
+      if (s.face < 0) continue;
+      for (const Piece& piece : perFace[s.face]) {
+        if (piece.arc <= a) continue;
+        const PathSegment& t = *piece.segment;
+        if (relateChords(s.from, s.to, t.from, t.to) == ChordRelation::Disjoint) continue;
+        if (!met[piece.arc]) others.push_back(piece.arc);
+        met[piece.arc] |= (s.direction - t.direction) % 2 == 0 ? 3 : 1;
+      }
+    }
+    std::sort(others.begin(), others.end());
+    for (int b : others) {
+      ((met[b] & 2) ? h.tangentialPairs : h.orthogonalPairs).emplace_back(a, b);
+      met[b] = 0;
+    }
+    others.clear();
   }
 }
 

@@ -1,6 +1,9 @@
 #include "tracing/separatrix_tracer.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -41,29 +44,29 @@ PathSegment arcSegment(const GeodesicGraph& g, int u, int v) {
   const EdgeSampling& es = g.sampling();
   PathSegment seg;
   if (g.isPortNode(u)) {  // source arc: from the singular vertex to the sample of v
-    int q = GeodesicGraph::nodeSample(v);
+    int q = g.nodeSample(v);
     int e = es.sampleEdge[q];
     if (g.isBorderTerminal(v)) {
       seg.face = es.edgeFace[e][0];
-      seg.direction = GeodesicGraph::nodeDirection(v);
+      seg.direction = g.nodeDirection(v);
     } else {
       int across = g.nodeFace(v);
       seg.face = es.edgeFace[e][0] == across ? es.edgeFace[e][1] : es.edgeFace[e][0];
       int i = localEdgeOfSample(es, q, seg.face);
-      seg.direction = mod4(GeodesicGraph::nodeDirection(v) - g.analysis().matching[seg.face][i]);
+      seg.direction = mod4(g.nodeDirection(v) - g.analysis().matching[seg.face][i]);
     }
     seg.from = cornerCoordinate(cornerOf(mesh, seg.face, g.ports()[g.portOfNode(u)].vertex));
     seg.to = edgeCoordinate(localEdgeOfSample(es, q, seg.face), es.paramInFace(q, seg.face));
     return seg;
   }
-  int qa = GeodesicGraph::nodeSample(u);
+  int qa = g.nodeSample(u);
   seg.face = g.nodeFace(u);
-  seg.direction = GeodesicGraph::nodeDirection(u);
+  seg.direction = g.nodeDirection(u);
   seg.from = edgeCoordinate(localEdgeOfSample(es, qa, seg.face), es.paramInFace(qa, seg.face));
   if (g.isPortNode(v)) {
     seg.to = cornerCoordinate(cornerOf(mesh, seg.face, g.ports()[g.portOfNode(v)].vertex));
   } else {
-    int qb = GeodesicGraph::nodeSample(v);
+    int qb = g.nodeSample(v);
     seg.to = edgeCoordinate(localEdgeOfSample(es, qb, seg.face), es.paramInFace(qb, seg.face));
   }
   return seg;
@@ -71,7 +74,7 @@ PathSegment arcSegment(const GeodesicGraph& g, int u, int v) {
 
 Vec3 nodePosition(const GeodesicGraph& g, int node) {
   if (g.isPortNode(node)) return g.mesh().position(g.ports()[g.portOfNode(node)].vertex);
-  return g.sampling().samplePosition[GeodesicGraph::nodeSample(node)];
+  return g.sampling().samplePosition[g.nodeSample(node)];
 }
 
 PathPoint nodePoint(const GeodesicGraph& g, int node) {
@@ -81,7 +84,7 @@ PathPoint nodePoint(const GeodesicGraph& g, int node) {
     p.id = g.ports()[g.portOfNode(node)].vertex;
   } else {
     p.kind = PathPoint::Sample;
-    p.id = GeodesicGraph::nodeSample(node);
+    p.id = g.nodeSample(node);
   }
   p.position = nodePosition(g, node);
   return p;
@@ -97,45 +100,61 @@ Vec3 intersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return a + r * std::clamp(t, 0.0, 1.0);
 }
 
-/// A 4-ary min-heap of (distance, node): shallower than a binary heap, and its children sit
-/// in one cache line, which matters for searches that settle millions of nodes.
-class QuaternaryHeap {
+/// A radix heap (Ahuja, Mehlhorn, Orlin, Tarjan 1990) of (distance, node): a monotone
+/// priority queue, which is all Dijkstra needs (no key pushed is below the last one popped).
+/// Non-negative floats order like their bit patterns, so keys are those bits; an entry lives
+/// in the bucket of the highest bit in which its key differs from the last key popped. Pushes
+/// are O(1) and each entry moves down at most 32 times, without the branchy sift-downs of a
+/// comparison heap. Among equal keys the order is fixed (last in, first out), so results do
+/// not depend on timing.
+class RadixHeap {
 public:
   using Entry = std::pair<float, int>;
-  bool empty() const { return data_.empty(); }
-  void clear() { data_.clear(); }
-  const Entry& top() const { return data_.front(); }
-  void push(Entry e) {
-    std::size_t i = data_.size();
-    data_.push_back(e);
-    while (i > 0) {
-      std::size_t parent = (i - 1) / 4;
-      if (!(e < data_[parent])) break;
-      data_[i] = data_[parent];
-      i = parent;
-    }
-    data_[i] = e;
+  bool empty() const { return size_ == 0; }
+  void clear() {
+    for (auto& b : buckets_) b.clear();
+    size_ = 0;
+    last_ = 0;
   }
-  void pop() {
-    Entry last = data_.back();
-    data_.pop_back();
-    if (data_.empty()) return;
-    std::size_t i = 0, n = data_.size();
-    for (;;) {
-      std::size_t first = 4 * i + 1;
-      if (first >= n) break;
-      std::size_t best = first, end = std::min(first + 4, n);
-      for (std::size_t c = first + 1; c < end; ++c)
-        if (data_[c] < data_[best]) best = c;
-      if (!(data_[best] < last)) break;
-      data_[i] = data_[best];
-      i = best;
+  void push(Entry e) {
+    std::uint32_t key = keyOf(e.first);
+    buckets_[bucketOf(key)].push_back({key, e.second});
+    ++size_;
+  }
+  /// Removes and returns an entry with the smallest key. Requires !empty().
+  Entry pop() {
+    if (buckets_[0].empty()) {
+      int i = 1;
+      while (buckets_[i].empty()) ++i;
+      std::uint32_t smallest = buckets_[i][0].key;
+      for (const Item& it : buckets_[i]) smallest = std::min(smallest, it.key);
+      last_ = smallest;
+      for (const Item& it : buckets_[i]) buckets_[bucketOf(it.key)].push_back(it);
+      buckets_[i].clear();
     }
-    data_[i] = last;
+    Item it = buckets_[0].back();
+    buckets_[0].pop_back();
+    --size_;
+    float d;
+    std::memcpy(&d, &it.key, sizeof d);
+    return {d, it.node};
   }
 
 private:
-  std::vector<Entry> data_;
+  struct Item {
+    std::uint32_t key;
+    int node;
+  };
+  static std::uint32_t keyOf(float d) {
+    std::uint32_t k;
+    std::memcpy(&k, &d, sizeof k);
+    return k;
+  }
+  int bucketOf(std::uint32_t key) const { return key == last_ ? 0 : 32 - __builtin_clz(key ^ last_); }
+
+  std::array<std::vector<Item>, 33> buckets_;
+  std::size_t size_ = 0;
+  std::uint32_t last_ = 0;
 };
 
 struct Terminal {
@@ -147,15 +166,13 @@ struct Terminal {
 
 class Search {
 public:
-  explicit Search(const GeodesicGraph& g)
-      : g_(g), dist_(g.numNodeSlots(), std::numeric_limits<float>::infinity()), pred_(g.numNodeSlots(), -1),
-        settled_(g.numNodeSlots(), 0) {}
+  explicit Search(const GeodesicGraph& g) : g_(g), state_(g.numNodeSlots()) {}
 
   std::vector<TracedPath> run(int port, const SearchOptions& opt) {
     reset();
     std::vector<TracedPath> found;
     terminals_.clear();
-    QuaternaryHeap& heap = heap_;
+    RadixHeap& heap = heap_;
     heap.clear();
     const int source = g_.sourceNode(port);
     setDist(source, 0, -1);
@@ -164,14 +181,14 @@ public:
     const double alpha = g_.parameters().alpha;
     int sinks = 0;
     while (!heap.empty()) {
-      auto [d, u] = heap.top();
-      heap.pop();
+      auto [d, u] = heap.pop();
       if (u < 0) {  // a t-junction terminal: the path stops on a barrier
         found.push_back(buildTerminalPath(port, terminals_[-1 - u], d));
         break;
       }
-      if (settled_[u]) continue;
-      settled_[u] = 1;
+      // Every push lowers a node's distance, so only its last entry matches it: an older
+      // entry is stale, and a node is settled when its matching entry is popped.
+      if (d > state_[u].dist) continue;
       if (g_.isSinkNode(u)) {
         int p = g_.portOfNode(u);
         bool allowed = p != port && (opt.sinkAllowed.empty() || opt.sinkAllowed[p] != 0);
@@ -181,19 +198,20 @@ public:
         if (opt.tJunctionMode || ++sinks >= opt.maxSinks) break;
         continue;
       }
-      if (g_.isBorderTerminal(u)) {
-        if (opt.tJunctionMode) {
-          found.push_back(buildPath(port, u, d, TracedPath::Border));
-          break;
-        }
-        continue;
+      if (opt.tJunctionMode && g_.isBorderTerminal(u)) {  // only t-junction searches enter them
+        found.push_back(buildPath(port, u, d, TracedPath::Border));
+        break;
       }
-      for (std::int64_t a = g_.arcBegin(u), e = g_.arcBegin(u + 1); a < e; ++a) {
-        int v = g_.arcTarget(a);
-        if (settled_[v]) continue;
-        if (!opt.tJunctionMode && g_.isBorderTerminal(v)) continue;  // paths reaching the border are dropped
-        float nd = d + g_.arcWeight(a);
+      for (const GeodesicGraph::Arc *a = g_.arcsBegin(u), *end = g_.arcsEnd(u); a != end; ++a) {
+        int v = a->target;
+        if (GeodesicGraph::entersBorder(*a)) {
+          if (!opt.tJunctionMode) continue;  // paths reaching the border are dropped
+          v = ~v;
+        }
+        float nd = d + a->weight;
         if (barriers) {
+          // Nodes at distance <= d are settled (ties aside): nothing to test there.
+          if (state_[v].dist <= d) continue;
           PathSegment seg = arcSegment(g_, u, v);
           const auto& chords = barriers->inFace(seg.face);
           if (!chords.empty()) {
@@ -224,7 +242,7 @@ public:
             }
           }
         }
-        if (nd < dist_[v]) {
+        if (nd < state_[v].dist) {
           setDist(v, nd, u);
           heap.push({nd, v});
         }
@@ -243,23 +261,18 @@ private:
   }
 
   void reset() {
-    for (int n : touched_) {
-      dist_[n] = std::numeric_limits<float>::infinity();
-      pred_[n] = -1;
-      settled_[n] = 0;
-    }
+    for (int n : touched_) state_[n] = NodeState();
     touched_.clear();
   }
 
   void setDist(int n, float d, int pred) {
-    if (std::isinf(dist_[n])) touched_.push_back(n);
-    dist_[n] = d;
-    pred_[n] = pred;
+    if (std::isinf(state_[n].dist)) touched_.push_back(n);
+    state_[n] = {d, pred};
   }
 
   std::vector<int> chainTo(int end) const {
     std::vector<int> nodes;
-    for (int n = end; n >= 0; n = pred_[n]) nodes.push_back(n);
+    for (int n = end; n >= 0; n = state_[n].pred) nodes.push_back(n);
     std::reverse(nodes.begin(), nodes.end());
     return nodes;
   }
@@ -290,13 +303,17 @@ private:
     return path;
   }
 
+  /// A node's tentative distance and predecessor, side by side: a relaxation reads one line.
+  struct NodeState {
+    float dist = std::numeric_limits<float>::infinity();
+    int pred = -1;
+  };
+
   const GeodesicGraph& g_;
-  std::vector<float> dist_;
-  std::vector<int> pred_;
-  std::vector<char> settled_;
+  std::vector<NodeState> state_;
   std::vector<int> touched_;
   std::vector<Terminal> terminals_;
-  QuaternaryHeap heap_;
+  RadixHeap heap_;
 };
 
 }  // namespace
