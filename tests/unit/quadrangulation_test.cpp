@@ -188,6 +188,55 @@ TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
   }, std::invalid_argument);
 }
 
+TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
+  // A t-junction: patch A's right side is two segments (1, 2), the left sides of patches B and
+  // C; A's left side is segment 0. Opposite single segments are chord classes: {1, 3}, {2, 4},
+  // {5, 6} (A's top and bottom), {7, 8} (B's), {9, 10} (C's). Only A's left-right equality
+  // links classes: 0 = 1 + 2. Target edge 1, so the ideal counts are the lengths.
+  const std::vector<double> length = {10, 3, 3, 3.2, 2.9, 4, 5, 6, 6.4, 2.2, 2.6};
+  PatchGraph graph;
+  for (double l : length) {
+    LayoutSegment seg;
+    seg.length = l;
+    graph.segments.push_back(seg);
+  }
+  auto patch = [](std::vector<int> bottom, std::vector<int> right, std::vector<int> top, std::vector<int> left) {
+    PatchSides ps;
+    int k = 0;
+    for (const auto& side : {bottom, right, top, left}) {
+      for (int s : side) ps.sides[k].push_back({s, false, 0});
+      ++k;
+    }
+    return ps;
+  };
+  graph.patches = {patch({5}, {1, 2}, {6}, {0}), patch({7}, {3}, {8}, {1}), patch({9}, {4}, {10}, {2})};
+  const SideLengths lengths = solveSideLengths(graph, 1.0, 30);
+  EXPECT_EQ(lengths.parts, 4);     // {0, 1–3, 2–4}, {5, 6}, {7, 8}, {9, 10}
+  EXPECT_EQ(lengths.programs, 1);  // only the first needs lp_solve
+  EXPECT_TRUE(lengths.inconsistentPatches.empty());
+  const auto& n = lengths.segments;
+  EXPECT_EQ(n[0], n[1] + n[2]);
+  EXPECT_EQ(n[1], n[3]);
+  EXPECT_EQ(n[2], n[4]);
+  // Brute force of the documented cost: Σ max(n − ideal, 3·(ideal − n)), counts of a class at
+  // least floor(max ideal / 1.5), and 0 = 1 + 2.
+  auto cost = [](int count, std::initializer_list<double> ideals) {
+    double c = 0;
+    for (double ideal : ideals) c += std::max(count - ideal, 3 * (ideal - count));
+    return c;
+  };
+  double best = 1e300;
+  for (int a = 2; a < 20; ++a)
+    for (int b = 2; b < 20; ++b)
+      if (a + b >= 6) best = std::min(best, cost(a + b, {10}) + cost(a, {3, 3.2}) + cost(b, {3, 2.9}));
+  EXPECT_NEAR(cost(n[0], {10}) + cost(n[1], {3, 3.2}) + cost(n[2], {3, 2.9}), best, 1e-9);
+  for (auto [i, j] : {std::pair{5, 6}, {7, 8}, {9, 10}}) {
+    EXPECT_EQ(n[i], n[j]);
+    for (int other = 1; other < 20; ++other)
+      EXPECT_LE(cost(n[i], {length[i], length[j]}), cost(other, {length[i], length[j]})) << "segments " << i << ", " << j;
+  }
+}
+
 TEST(Quadrangulation, SplittingAPatchWithTJunctionsGivesConsistentParts) {
   // The torus example's layout is one patch with t-junctions on its sides: split it as a zero
   // chain would be split, and check the result is consistent: every part a regular grid, the

@@ -1,9 +1,12 @@
 #include "quadrangulation/side_lengths.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 namespace fcql {
 
@@ -29,85 +32,166 @@ bool singleSegmentPair(const PatchSides& ps, int k) {
   return ps.sides[k].size() == 1 && ps.sides[k + 2].size() == 1;
 }
 
-SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds, bool honourForced) {
+/// Rounding cost of count n for a class whose segments have these ideal counts:
+/// Σ max(n − ideal, kUnderWeight·(ideal − n)).
+double roundingCost(int n, const std::vector<double>& ideals) {
+  double cost = 0;
+  for (double ideal : ideals) cost += std::max(n - ideal, kUnderWeight * (ideal - n));
+  return cost;
+}
+
+/// An equality between the opposite sides of a patch that do not reduce to one class each:
+/// Σ (coefficient · class count) = 0, exactly if `forced`, else in the L1 sense.
+struct SideEquality {
+  std::vector<std::pair<int, double>> terms;  ///< (class, coefficient)
+  bool forced;
+};
+
+struct Component {
+  std::vector<int> classes;
+  std::vector<int> equalities;
+};
+
+/// The program of one component: class counts, rounding terms, its equalities. Returns the
+/// solver's result; `variableOf` maps each class to its variable.
+IntegerProgram::Result solveComponent(const Component& c, const std::vector<SideEquality>& equalities,
+                                      const std::vector<std::vector<double>>& idealsOf,
+                                      const std::vector<double>& lowerOf, const std::vector<double>& upperOf,
+                                      double softWeight, bool honourForced, double timeLimitSeconds,
+                                      std::map<int, int>& variableOf) {
+  IntegerProgram ip;
+  variableOf.clear();
+  for (int cls : c.classes) {
+    const int n = ip.addVariable(lowerOf[cls], upperOf[cls], true, 0);
+    variableOf[cls] = n;
+    // t ≥ n − ideal and t ≥ kUnderWeight·(ideal − n) per segment: a chord crossing patches
+    // of different widths gets a count nearer to its wide patches than the plain median, so
+    // no patch is sampled much more coarsely than the target (which would lose the shape).
+    for (double ideal : idealsOf[cls]) {
+      const int t = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, 1.0);
+      ip.addConstraint({{t, 1}, {n, -1}}, IntegerProgram::Sense::GreaterEqual, -ideal);
+      ip.addConstraint({{t, 1}, {n, kUnderWeight}}, IntegerProgram::Sense::GreaterEqual, kUnderWeight * ideal);
+    }
+  }
+  for (int e : c.equalities) {
+    std::vector<std::pair<int, double>> diff;
+    for (const auto& term : equalities[e].terms) diff.push_back({variableOf.at(term.first), term.second});
+    if (honourForced && equalities[e].forced) {
+      ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
+      continue;
+    }
+    // d ≥ |Σa − Σb|
+    const int d = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, softWeight);
+    auto plus = diff, minus = diff;
+    plus.push_back({d, 1.0});
+    for (auto& term : minus) term.second = -term.second;
+    minus.push_back({d, 1.0});
+    ip.addConstraint(plus, IntegerProgram::Sense::GreaterEqual, 0);
+    ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, 0);
+  }
+  // A 1% gap cannot hide a mismatch (each costs softWeight, more than 1% of any objective
+  // made of rounding terms alone) and spares branch and bound most of its work.
+  ip.setRelativeGap(0.01);
+  return ip.solve(timeLimitSeconds);
+}
+
+int statusRank(IntegerProgram::Status s) { return s == IntegerProgram::Status::Optimal ? 0 : 1; }
+
+SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds) {
+  const auto start = std::chrono::steady_clock::now();
   const int ns = int(graph.segments.size());
   // Segments that must be equal because they are the single-segment opposite sides of a
-  // patch form classes (the chords of the layout): one integer variable per class.
+  // patch form classes (the chords of the layout): one integer count per class.
   std::vector<int> parent(ns);
   for (int s = 0; s < ns; ++s) parent[s] = s;
   for (const PatchSides& ps : graph.patches)
     for (int k = 0; k < 2 && ps.active; ++k)
       if (singleSegmentPair(ps, k))
         parent[findRoot(parent, ps.sides[k][0].segment)] = findRoot(parent, ps.sides[k + 2][0].segment);
-
-  IntegerProgram ip;
-  std::vector<int> classVariable(ns, -1), n(ns);
-  std::vector<double> ideal(ns), classMaxIdeal(ns, 0.0);
+  std::vector<int> classOf(ns);
+  std::vector<std::vector<double>> idealsOf(ns);
+  std::vector<double> classMaxIdeal(ns, 0.0);
   for (int s = 0; s < ns; ++s) {
-    ideal[s] = graph.segments[s].length / targetEdgeLength;
-    const int root = findRoot(parent, s);
-    classMaxIdeal[root] = std::max(classMaxIdeal[root], ideal[s]);
+    classOf[s] = findRoot(parent, s);
+    const double ideal = graph.segments[s].length / targetEdgeLength;
+    idealsOf[classOf[s]].push_back(ideal);
+    classMaxIdeal[classOf[s]] = std::max(classMaxIdeal[classOf[s]], ideal);
   }
-  for (int s = 0; s < ns; ++s) {
-    const int root = findRoot(parent, s);
+  std::vector<double> lowerOf(ns), upperOf(ns);
+  for (int c = 0; c < ns; ++c) {
     // No segment of a class is sampled more than kMaxStretch times coarser than the target.
-    const double lower = std::max(1.0, std::floor(classMaxIdeal[root] / kMaxStretch));
-    if (classVariable[root] < 0)
-      classVariable[root] = ip.addVariable(lower, 4 * std::ceil(classMaxIdeal[root]) + 4, true, 0);
-    n[s] = classVariable[root];
-    // t_s ≥ n_s − ideal_s and t_s ≥ kUnderWeight·(ideal_s − n_s): a chord crossing patches of
-    // different widths gets a count nearer to its wide patches than the plain median, so no
-    // patch is sampled much more coarsely than the target (which would lose the shape).
-    const int t = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, 1.0);
-    ip.addConstraint({{t, 1}, {n[s], -1}}, IntegerProgram::Sense::GreaterEqual, -ideal[s]);
-    ip.addConstraint({{t, 1}, {n[s], kUnderWeight}}, IntegerProgram::Sense::GreaterEqual, kUnderWeight * ideal[s]);
+    lowerOf[c] = std::max(1.0, std::floor(classMaxIdeal[c] / kMaxStretch));
+    upperOf[c] = 4 * std::ceil(classMaxIdeal[c]) + 4;
   }
-  const double softWeight = 10.0 * kUnderWeight * (1 + ns);  // any mismatch costs more than all rounding
+  // The other opposite-side pairs (sides made of several segments, at t-junctions).
+  std::vector<SideEquality> equalities;
   for (const PatchSides& ps : graph.patches)
     for (int k = 0; k < 2 && ps.active; ++k) {
       if (singleSegmentPair(ps, k)) continue;
-      // Σa − Σb, with the terms of one class gathered.
-      std::map<int, double> sum;
-      for (const auto& s : ps.sides[k]) sum[n[s.segment]] += 1.0;
-      for (const auto& s : ps.sides[k + 2]) sum[n[s.segment]] -= 1.0;
-      std::vector<std::pair<int, double>> diff;
+      std::map<int, double> sum;  // Σa − Σb, with the terms of one class gathered
+      for (const auto& s : ps.sides[k]) sum[classOf[s.segment]] += 1.0;
+      for (const auto& s : ps.sides[k + 2]) sum[classOf[s.segment]] -= 1.0;
+      SideEquality eq{{}, ps.forceEqual};
       for (const auto& term : sum)
-        if (term.second != 0) diff.push_back(term);
-      if (diff.empty()) continue;
-      if (honourForced && ps.forceEqual) {
-        ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
-        continue;
-      }
-      // d ≥ |Σa − Σb|
-      int d = ip.addVariable(0, std::numeric_limits<double>::infinity(), false, softWeight);
-      auto plus = diff, minus = diff;
-      plus.push_back({d, 1.0});
-      for (auto& term : minus) term.second = -term.second;
-      minus.push_back({d, 1.0});
-      ip.addConstraint(plus, IntegerProgram::Sense::GreaterEqual, 0);
-      ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, 0);
+        if (term.second != 0) eq.terms.push_back(term);
+      if (!eq.terms.empty()) equalities.push_back(std::move(eq));
     }
-  // A 1% gap cannot hide a mismatch (each costs softWeight, more than 1% of any objective
-  // made of rounding terms alone) and spares branch and bound most of its work.
-  ip.setRelativeGap(0.01);
-  IntegerProgram::Result r = ip.solve(timeLimitSeconds);
-  if (!r.hasSolution()) {
-    // Forced equalities that cannot all hold (or that lp_solve cannot settle in time): solve
-    // again with them soft; the patches that then disagree are split once more.
-    if (honourForced && (r.status == IntegerProgram::Status::Infeasible || r.status == IntegerProgram::Status::Failed))
-      return solve(graph, targetEdgeLength, timeLimitSeconds, false);
-    throw std::runtime_error("side lengths: " + r.message);
-  }
+  // The program splits exactly into independent components: classes linked by equalities.
+  // A class in no equality just takes its best rounding; each other component is a small
+  // program of its own, which lp_solve settles far faster than one program of thousands of
+  // classes (the dragon's layout has 20K).
+  std::vector<int> link(ns);
+  for (int c = 0; c < ns; ++c) link[c] = c;
+  for (const SideEquality& eq : equalities)
+    for (std::size_t i = 1; i < eq.terms.size(); ++i)
+      link[findRoot(link, eq.terms[i].first)] = findRoot(link, eq.terms[0].first);
+  std::map<int, Component> components;
+  for (int s = 0; s < ns; ++s)
+    if (classOf[s] == s) components[findRoot(link, s)].classes.push_back(s);
+  for (int e = 0; e < int(equalities.size()); ++e)
+    components[findRoot(link, equalities[e].terms[0].first)].equalities.push_back(e);
+
   SideLengths out;
-  out.status = r.status;
-  out.message = r.message;
-  out.seconds = r.seconds;
+  std::vector<int> count(ns, 0);
+  const double softWeight = 10.0 * kUnderWeight * (1 + ns);  // any mismatch costs more than all rounding
+  int programs = 0;
+  for (const auto& entry : components) {
+    const Component& c = entry.second;
+    if (c.equalities.empty()) {
+      for (int cls : c.classes) {
+        int best = int(lowerOf[cls]);
+        for (int n = best + 1; n <= int(upperOf[cls]); ++n)
+          if (roundingCost(n, idealsOf[cls]) < roundingCost(best, idealsOf[cls]) - 1e-12) best = n;
+        count[cls] = best;
+      }
+      continue;
+    }
+    ++programs;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double limit = std::max(1.0, timeLimitSeconds - elapsed);
+    std::map<int, int> variableOf;
+    IntegerProgram::Result r =
+        solveComponent(c, equalities, idealsOf, lowerOf, upperOf, softWeight, true, limit, variableOf);
+    if (!r.hasSolution() && (r.status == IntegerProgram::Status::Infeasible || r.status == IntegerProgram::Status::Failed)) {
+      // Forced equalities that cannot all hold (or that lp_solve cannot settle in time): solve
+      // again with them soft; the patches that then disagree are split once more.
+      r = solveComponent(c, equalities, idealsOf, lowerOf, upperOf, softWeight, false, limit, variableOf);
+    }
+    if (!r.hasSolution()) throw std::runtime_error("side lengths: " + r.message);
+    if (statusRank(r.status) > statusRank(out.status)) out.status = r.status, out.message = r.message;
+    for (int cls : c.classes) count[cls] = int(std::lround(r.values[variableOf.at(cls)]));
+  }
+  out.parts = int(components.size());
+  out.programs = programs;
+  if (out.message.empty())
+    out.message = std::to_string(out.parts) + " independent parts, " + std::to_string(programs) + " solved by lp_solve";
   out.segments.resize(ns);
-  for (int s = 0; s < ns; ++s) out.segments[s] = int(std::lround(r.values[n[s]]));
+  for (int s = 0; s < ns; ++s) out.segments[s] = count[classOf[s]];
   for (int p = 0; p < int(graph.patches.size()); ++p)
     if (graph.patches[p].active &&
         (out.sideLength(graph, p, 0) != out.sideLength(graph, p, 2) || out.sideLength(graph, p, 1) != out.sideLength(graph, p, 3)))
       out.inconsistentPatches.push_back(p);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 
@@ -115,7 +199,7 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
 
 SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds) {
   if (!(targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
-  return solve(graph, targetEdgeLength, timeLimitSeconds, true);
+  return solve(graph, targetEdgeLength, timeLimitSeconds);
 }
 
 }  // namespace fcql

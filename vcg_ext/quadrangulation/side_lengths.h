@@ -1,7 +1,10 @@
 // Integer side lengths for the patches (§4.4): one integer n_s ≥ 1 per segment, as close as
 // possible (L1) to its ideal subdivision length(s) / targetEdgeLength, with the opposite
 // sides of every patch equal: exactly where neither side carries a t-junction, in an L1
-// sense (heavily weighted) where one does. Solved with lp_solve.
+// sense (heavily weighted) where one does. Segments forced equal (single-segment opposite
+// sides) share one count (a chord class); the program then splits into independent parts,
+// classes linked by the remaining equalities: a class in none takes its best rounding
+// directly, each other part is solved with lp_solve on its own.
 #pragma once
 
 #include "layout/integer_program.h"
@@ -18,6 +21,8 @@ struct SideLengths {
   IntegerProgram::Status status = IntegerProgram::Status::Optimal;
   std::string message;
   double seconds = 0;
+  int parts = 0;     ///< independent parts of the program
+  int programs = 0;  ///< parts that needed lp_solve (the others are single classes)
 
   /// Subdivisions along side k of patch p.
   int sideLength(const PatchGraph& g, int p, int k) const;
