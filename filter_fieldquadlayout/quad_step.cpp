@@ -6,6 +6,16 @@
 #include <cstdio>
 
 namespace fcql_meshlab {
+namespace {
+
+/// The options the filter runs the stage with (the library's defaults, including the 1%
+/// bound on the distance to the surface), apart from the target and the time limit.
+const fcql::QuadrangulationOptions& options() {
+  static const fcql::QuadrangulationOptions defaults;
+  return defaults;
+}
+
+}  // namespace
 
 QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult& layout,
                                const LayoutParameters& layoutParams,
@@ -14,10 +24,10 @@ QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult
   QuadStepResult r;
   r.targetEdgeLength = params.scale * mesh.boundingBoxDiagonal();
   progress(0, "side lengths and patch sampling");
-  fcql::QuadrangulationOptions options;
-  options.targetEdgeLength = r.targetEdgeLength;
-  options.ilpTimeLimit = layoutParams.ilpTimeLimit;
-  r.quad = fcql::quadrangulate(layout.patches, options);
+  fcql::QuadrangulationOptions stage = options();
+  stage.targetEdgeLength = r.targetEdgeLength;
+  stage.ilpTimeLimit = layoutParams.ilpTimeLimit;
+  r.quad = fcql::quadrangulate(layout.patches, stage);
 
   progress(90, "quad layer");
   const fcql::QuadMesh& q = r.quad.mesh;
@@ -67,6 +77,16 @@ std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
   if (r.quad.splitPatches > 0)
     lines.push_back("Zero chains: " + std::to_string(r.quad.splitPatches) +
                     " patches split by Catmull-Clark steps (" + std::to_string(r.quad.splitRounds) + " rounds)");
+  if (r.quad.refinements > 0) {
+    char refined[240];
+    const double diagonal = r.quad.deviationLimit / options().maxDeviation;
+    std::snprintf(refined, sizeof refined,
+                  "Refined %d time(s) to stay within %g%% of the diagonal: target edge length %.6g -> %.6g, deviation %.3g%%%s",
+                  r.quad.refinements, 100 * options().maxDeviation, r.targetEdgeLength, r.quad.targetEdgeLength,
+                  100 * r.quad.deviation / diagonal,
+                  r.quad.deviation > r.quad.deviationLimit ? " (still above: refinements exhausted)" : "");
+    lines.push_back(refined);
+  }
   if (r.quad.polygonPatches > 0)
     lines.push_back(std::to_string(r.quad.polygonPatches) +
                     " layout patches with 3, 5 or more corners cut into quads as n-gons");

@@ -32,7 +32,16 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   options.ilpTimeLimit = cl.number("ilp-time-limit", 60, 1, 86400);
   options.smoothing.iterations = cl.integer("smooth", 5, 0, 1000);
   options.smoothing.sharpAngleDeg = cl.number("sharp-angle", 35.0, 0.0, 180.0);
+  options.maxDeviation = cl.number("max-deviation", 0.01, 0.0, 1.0);
   QuadrangulationResult r = quadrangulate(ls.patches, options);
+  if (r.refinements > 0) {
+    char note[240];
+    std::snprintf(note, sizeof note,
+                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation %.3g%%%s",
+                  r.refinements, 100 * options.maxDeviation, target, r.targetEdgeLength, 100 * r.deviation / diagonal,
+                  r.deviation > r.deviationLimit ? " (still above: refinements exhausted)" : "");
+    progress(quiet, note);
+  }
   qs.graph = std::move(r.graph);
   qs.lengths = std::move(r.lengths);
   qs.mesh = std::move(r.mesh);
@@ -53,6 +62,9 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
                       " vertices, genus " + std::to_string(qs.report.genus) + ", " + std::to_string(qs.report.borderLoops) +
                       " border loops, " + std::to_string(qs.report.irregularVertices) + " irregular vertices");
   stats.set("params.target_edge_length", target);
+  stats.set("params.max_deviation", options.maxDeviation);
+  stats.set("quad.refinements", r.refinements);
+  stats.set("quad.target_edge_length", r.targetEdgeLength);
   stats.set("params.smooth", options.smoothing.iterations);
   stats.set("quad.faces", qs.mesh.numQuads());
   stats.set("quad.vertices", qs.mesh.numVertices());
@@ -88,7 +100,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
 int quadCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
                  {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "scale",
-                  "target-faces", "smooth"},
+                  "target-faces", "smooth", "max-deviation"},
                  {"quiet"});
   if (!cl.has("out")) throw UsageError("missing --out DIR");
   if (cl.has("scale") && cl.has("target-faces")) throw UsageError("give --scale or --target-faces, not both");
@@ -98,6 +110,7 @@ int quadCommand(int argc, char** argv) {
   cl.number("scale", 0.02, 1e-5, 1.0);
   cl.integer("target-faces", 1000, 1, 100000000);
   cl.integer("smooth", 5, 0, 1000);
+  cl.number("max-deviation", 0.01, 0.0, 1.0);
   StatsJson stats;
   auto start = std::chrono::steady_clock::now();
   FieldStage fs = runFieldStage(cl, stats, quiet);

@@ -49,6 +49,23 @@ else
   fail "fcql run --example rounded_box exited non-zero"
 fi
 
+# ---- --max-deviation: quads far coarser than the rounded edges are refined, unless disabled --------
+if "$fcql" run --example rounded_box --scale 0.3 --out "$tmp/refined" --quiet &&
+   "$fcql" run --example rounded_box --scale 0.3 --max-deviation 0 --out "$tmp/unrefined" --quiet; then
+  r="$tmp/refined/stats.json" u="$tmp/unrefined/stats.json"
+  check_quads "$tmp/refined"
+  [ "$(quad_value "$u" refinements)" = 0 ] || fail "--max-deviation 0: $(quad_value "$u" refinements) refinements"
+  awk -v h="$(quad_value "$u" hausdorff_rel)" 'BEGIN {exit !(h > 0.01)}' ||
+    fail "--scale 0.3 unrefined is already within 1% ($(quad_value "$u" hausdorff_rel)): pick a coarser scale"
+  awk -v n="$(quad_value "$r" refinements)" 'BEGIN {exit !(n >= 1)}' || fail "--scale 0.3: not refined"
+  awk -v h="$(quad_value "$r" hausdorff_rel)" 'BEGIN {exit !(h > 0 && h < 0.01)}' ||
+    fail "--scale 0.3 refined: Hausdorff $(quad_value "$r" hausdorff_rel) not below 1%"
+  awk -v a="$(quad_value "$r" faces)" -v b="$(quad_value "$u" faces)" 'BEGIN {exit !(a > b)}' ||
+    fail "refining did not add quads ($(quad_value "$r" faces) vs $(quad_value "$u" faces))"
+else
+  fail "fcql run --example rounded_box --scale 0.3 exited non-zero"
+fi
+
 # ---- --target-faces ---------------------------------------------------------------------------
 if "$fcql" run --example torus --target-faces 1500 --out "$tmp/torus" --quiet; then
   check_quads "$tmp/torus"
@@ -77,6 +94,8 @@ expect_error "--scale 2" --scale 2
 expect_error "--scale and --target-faces" --scale 0.02 --target-faces 100
 expect_error "--target-faces 0" --target-faces 0
 expect_error "--smooth -1" --smooth -1
+expect_error "--max-deviation -0.1" --max-deviation -0.1
+expect_error "--max-deviation 2" --max-deviation 2
 expect_error "--smooth abc" --smooth abc
 
 if [ "$failures" -gt 0 ]; then

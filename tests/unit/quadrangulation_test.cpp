@@ -159,6 +159,7 @@ TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
   auto q = layoutOf(makeExample("open_cylinder"));
   QuadrangulationOptions options;
   options.targetEdgeLength = 0.03 * q->mesh.boundingBoxDiagonal();
+  options.maxDeviation = 0;  // the same sampling for both: no refinement of the unsmoothed one
   options.smoothing.iterations = 0;
   const QuadrangulationResult raw = quadrangulate(q->patches, options);
   options.smoothing.iterations = 10;
@@ -186,6 +187,32 @@ TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
     bad.smoothing.step = 0;
     quadrangulate(q->patches, bad);
   }, std::invalid_argument);
+}
+
+TEST(Quadrangulation, CoarseTargetsAreRefinedUntilCloseToTheSurface) {
+  // Quads of a third of the diagonal on a rounded box cut its rounded edges by far more than
+  // 1%: the stage samples again with smaller quads until within the bound, and says so.
+  auto q = layoutOf(makeRoundedBox());
+  const double diagonal = q->mesh.boundingBoxDiagonal();
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.3 * diagonal;
+  options.maxDeviation = 0;
+  const QuadrangulationResult coarse = quadrangulate(q->patches, options);
+  EXPECT_EQ(coarse.refinements, 0);
+  const ClosestPointIndex index(q->mesh);
+  const double coarseHausdorff = measureQuadQuality(coarse.mesh, q->mesh, q->field, index).hausdorffRelative;
+  ASSERT_GT(coarseHausdorff, 0.01) << "the unrefined mesh is already close: pick a coarser target";
+  options.maxDeviation = 0.01;
+  const QuadrangulationResult refined = quadrangulate(q->patches, options);
+  EXPECT_GT(refined.refinements, 0);
+  EXPECT_LT(refined.targetEdgeLength, options.targetEdgeLength);
+  EXPECT_GT(refined.mesh.numQuads(), coarse.mesh.numQuads());
+  EXPECT_LE(refined.deviation, refined.deviationLimit);
+  EXPECT_NEAR(refined.deviationLimit, 0.01 * diagonal, 1e-9 * diagonal);
+  // Measured against the input mesh as the CLI does: within the bound too.
+  EXPECT_LT(measureQuadQuality(refined.mesh, q->mesh, q->field, index).hausdorffRelative, 0.01);
+  options.maxDeviation = -1;
+  EXPECT_THROW(quadrangulate(q->patches, options), std::invalid_argument);
 }
 
 TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
@@ -370,6 +397,7 @@ TEST(Quadrangulation, SmoothingPutsVerticesOnSharpEdges) {
   auto q = layoutOf(cube, &field);
   QuadrangulationOptions options;
   options.targetEdgeLength = 0.05 * q->mesh.boundingBoxDiagonal();
+  options.maxDeviation = 0;  // the same sampling for both: no refinement of the unsmoothed one
   options.smoothing.iterations = 0;
   const QuadrangulationResult raw = quadrangulate(q->patches, options);
   options.smoothing.iterations = 10;

@@ -25,6 +25,35 @@ double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, 
 
 }  // namespace
 
+double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                         const std::vector<Vec3>& surfacePoints) {
+  const auto& P = quads.positions;
+  double toSurface = 0;
+  for (const auto& f : quads.quads) {
+    toSurface = std::max(toSurface, surfaceIndex.closest((P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4).distance);
+    for (int i = 0; i < 4; ++i)
+      toSurface = std::max({toSurface, surfaceIndex.closest(P[f[i]]).distance,
+                            surfaceIndex.closest((P[f[i]] + P[f[(i + 1) % 4]]) / 2).distance});
+  }
+  if (quads.quads.empty()) return std::numeric_limits<double>::infinity();
+  // Surface → quad mesh, each quad split along its shorter diagonal.
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(2 * quads.quads.size());
+  for (const auto& f : quads.quads) {
+    if ((P[f[2]] - P[f[0]]).squaredNorm() <= (P[f[3]] - P[f[1]]).squaredNorm()) {
+      triangles.push_back({f[0], f[1], f[2]});
+      triangles.push_back({f[0], f[2], f[3]});
+    } else {
+      triangles.push_back({f[0], f[1], f[3]});
+      triangles.push_back({f[1], f[2], f[3]});
+    }
+  }
+  const ClosestPointIndex quadIndex(P, triangles);
+  double toQuads = 0;
+  for (const Vec3& p : surfacePoints) toQuads = std::max(toQuads, quadIndex.closest(p).distance);
+  return std::max(toSurface, toQuads);
+}
+
 double scaledJacobian(const QuadMesh& mesh, int q) {
   const auto& f = mesh.quads[q];
   const auto& P = mesh.positions;
@@ -49,12 +78,11 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
   if (nq == 0) return r;
   const auto& P = quads.positions;
   int misaligned = 0;
-  double sumAngle = 0, sumJ = 0, minJ = std::numeric_limits<double>::infinity(), toSurface = 0;
+  double sumAngle = 0, sumJ = 0, minJ = std::numeric_limits<double>::infinity();
   for (int q = 0; q < nq; ++q) {
     const auto& f = quads.quads[q];
     const Vec3 centre = (P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4;
     const ClosestPoint cp = surfaceIndex.closest(centre);
-    toSurface = std::max(toSurface, cp.distance);
     const Vec3 d1 = (P[f[1]] + P[f[2]]) - (P[f[0]] + P[f[3]]);
     const Vec3 d2 = (P[f[2]] + P[f[3]]) - (P[f[0]] + P[f[1]]);
     const double angle = std::max(angleToCross(surface, field, cp.triangle, d1),
@@ -65,34 +93,17 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
     sumJ += j;
     minJ = std::min(minJ, j);
     if (j <= 0) ++r.invertedQuads;
-    for (int i = 0; i < 4; ++i)
-      toSurface = std::max({toSurface, surfaceIndex.closest(P[f[i]]).distance,
-                            surfaceIndex.closest((P[f[i]] + P[f[(i + 1) % 4]]) / 2).distance});
   }
   r.misalignedPercent = 100.0 * misaligned / nq;
   r.meanMisalignmentDeg = sumAngle / nq * 180 / kPi;
   r.minScaledJacobian = minJ;
   r.meanScaledJacobian = sumJ / nq;
 
-  // Input → quad mesh, each quad split along its shorter diagonal.
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(2 * nq);
-  for (const auto& f : quads.quads) {
-    if ((P[f[2]] - P[f[0]]).squaredNorm() <= (P[f[3]] - P[f[1]]).squaredNorm()) {
-      triangles.push_back({f[0], f[1], f[2]});
-      triangles.push_back({f[0], f[2], f[3]});
-    } else {
-      triangles.push_back({f[0], f[1], f[3]});
-      triangles.push_back({f[1], f[2], f[3]});
-    }
-  }
-  const ClosestPointIndex quadIndex(P, triangles);
-  double toQuads = 0;
+  std::vector<Vec3> surfacePoints;
   for (int v = 0; v < surface.numVertices(); ++v)
-    if (!surface.star(v).empty()) toQuads = std::max(toQuads, quadIndex.closest(surface.position(v)).distance);
-  for (int f = 0; f < surface.numFaces(); ++f)
-    toQuads = std::max(toQuads, quadIndex.closest(surface.faceCentroid(f)).distance);
-  r.hausdorff = std::max(toSurface, toQuads);
+    if (!surface.star(v).empty()) surfacePoints.push_back(surface.position(v));
+  for (int f = 0; f < surface.numFaces(); ++f) surfacePoints.push_back(surface.faceCentroid(f));
+  r.hausdorff = hausdorffDistance(quads, surfaceIndex, surfacePoints);
   const double diag = surface.boundingBoxDiagonal();
   r.hausdorffRelative = diag > 0 ? r.hausdorff / diag : 0;
   return r;

@@ -21,6 +21,11 @@
 
 namespace fcql {
 
+/// Symmetric Hausdorff distance (see above) between `quads` and the surface that
+/// `surfaceIndex` indexes, whose sample points (vertices, face centroids) are `surfacePoints`.
+double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                         const std::vector<Vec3>& surfacePoints);
+
 /// Scaled Jacobian of quad q of `mesh` (see above).
 double scaledJacobian(const QuadMesh& mesh, int q);
 

@@ -1,14 +1,17 @@
 #include "quadrangulation/quadrangulation.h"
 
+#include "metrics/closest_point_index.h"
+#include "metrics/quad_quality.h"
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace fcql {
+namespace {
 
-QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options) {
-  if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
-  if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
-  if (!(options.ilpTimeLimit >= 1)) throw std::invalid_argument("the side-length time limit must be at least 1 s");
+/// One pass of the stage at one target edge length.
+QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options) {
   auto solveLengths = [&](const PatchGraph& graph) {
     if (options.ilpTimeLimit > kQuickSideLengthSeconds) {
       try {
@@ -39,6 +42,41 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   if (!r.report.manifold)
     throw std::runtime_error("the quad mesh came out non-manifold (" + r.report.problem +
                              "): the layout has a patch the sampling cannot handle");
+  r.targetEdgeLength = options.targetEdgeLength;
+  return r;
+}
+
+}  // namespace
+
+QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options) {
+  if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
+  if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
+  if (!(options.ilpTimeLimit >= 1)) throw std::invalid_argument("the side-length time limit must be at least 1 s");
+  if (!(options.maxDeviation >= 0) || !std::isfinite(options.maxDeviation))
+    throw std::invalid_argument("the maximum deviation must be a finite number >= 0");
+  if (options.maxRefinements < 0) throw std::invalid_argument("the number of refinements must be >= 0");
+  QuadrangulationResult r = quadrangulateOnce(layout, options);
+  if (options.maxDeviation <= 0) return r;
+  // The distance to the surface, measured on the layout's triangles (the input, cut): where it
+  // exceeds the bound, sample again more finely. A chord of a curve deviates from it by about
+  // h²/(8R) for edges of length h, hence the square root in the step.
+  Vec3 lo = layout.positions.front(), hi = lo;
+  for (const Vec3& p : layout.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double limit = options.maxDeviation * (hi - lo).norm();
+  const ClosestPointIndex surface(layout.positions, layout.triangles);
+  std::vector<Vec3> samples = layout.positions;
+  for (const auto& t : layout.triangles)
+    samples.push_back((layout.positions[t[0]] + layout.positions[t[1]] + layout.positions[t[2]]) / 3);
+  r.deviation = hausdorffDistance(r.mesh, surface, samples);
+  QuadrangulationOptions finer = options;
+  while (r.deviation > limit && r.refinements < options.maxRefinements) {
+    finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviation), 0.5, 0.9);
+    const int refinements = r.refinements + 1;
+    r = quadrangulateOnce(layout, finer);
+    r.refinements = refinements;
+    r.deviation = hausdorffDistance(r.mesh, surface, samples);
+  }
+  r.deviationLimit = limit;
   return r;
 }
 

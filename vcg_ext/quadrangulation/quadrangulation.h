@@ -17,6 +17,10 @@ struct QuadrangulationResult {
   int splitPatches = 0;    ///< patches split for zero chains, in all
   int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
   SmoothingReport smoothing;
+  double targetEdgeLength = 0;  ///< the target edge length the mesh was sampled with
+  int refinements = 0;          ///< times the target was lowered to meet maxDeviation
+  double deviation = 0;         ///< Hausdorff distance to the surface, absolute (0 if not measured)
+  double deviationLimit = 0;    ///< maxDeviation in mesh units (0 if not asked for)
 };
 
 constexpr double kQuickSideLengthSeconds = 2;
@@ -29,6 +33,12 @@ struct QuadrangulationOptions {
   double ilpTimeLimit = 60;
   int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
   SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions
+  /// Largest Hausdorff distance to the surface allowed, relative to the bounding-box diagonal
+  /// (0: no check). Where the mesh deviates more (curved parts finer than the target edge),
+  /// the stage runs again with a smaller target edge length, up to maxRefinements times;
+  /// the result says how often and how close it came.
+  double maxDeviation = 0.01;
+  int maxRefinements = 4;
 };
 
 /// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
