@@ -388,6 +388,30 @@ TEST(Quadrangulation, CoarseInputsGiveAValidQuadMeshOrAClearError) {
   EXPECT_GE(succeeded, 1) << "the flat square must quadrangulate";
 }
 
+TEST(Quadrangulation, SmoothingUntanglesAFoldedQuad) {
+  // A 3×3 grid of unit quads on the plane z = 0 with one inner vertex pushed across the
+  // diagonal of its quad: three quads fold. One round with a tiny Laplacian step cannot undo
+  // that; the untangling pass must, keeping the vertex on the surface.
+  QuadMesh grid;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i) grid.positions.push_back(Vec3(i, j, 0));
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) grid.quads.push_back({4 * j + i, 4 * j + i + 1, 4 * (j + 1) + i + 1, 4 * (j + 1) + i});
+  grid.positions[5] = Vec3(2.3, 2.3, 0);  // vertex (1, 1) beyond (2, 2)
+  int folded = 0;
+  for (int q = 0; q < grid.numQuads(); ++q) folded += scaledJacobian(grid, q) <= 0;
+  ASSERT_GE(folded, 2);
+  const std::vector<Vec3> plane = {Vec3(-1, -1, 0), Vec3(4, -1, 0), Vec3(4, 4, 0), Vec3(-1, 4, 0)};
+  const std::vector<std::array<int, 3>> triangles = {{0, 1, 2}, {0, 2, 3}};
+  SmoothingOptions options;
+  options.iterations = 1;
+  options.step = 0.01;
+  const SmoothingReport report = smoothQuadMesh(grid, plane, triangles, options);
+  EXPECT_GT(report.untangledMoves, 0);
+  for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(scaledJacobian(grid, q), 0.1) << "quad " << q;
+  for (const Vec3& p : grid.positions) EXPECT_NEAR(p.z(), 0, 1e-12);
+}
+
 TEST(Quadrangulation, SmoothingPutsVerticesOnSharpEdges) {
   // The cube's 12 sharp edges are separatrices of its layout, traced through the triangles next
   // to them: smoothing snaps the quad vertices close to the edges onto them, keeps those already

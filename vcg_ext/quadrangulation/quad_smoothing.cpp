@@ -39,6 +39,56 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
   return sharp;
 }
 
+/// Vertices of quads still folded or nearly flat (scaled Jacobian ≤ kMinScaledJacobian) try a
+/// few positions and keep the one that most raises the worst scaled Jacobian of their quads:
+/// the parallelogram completion a + c − b of each of their quads (a, c its neighbours there,
+/// b the opposite corner), which makes that quad convex, and their neighbours' average, each
+/// put back on the surface. A dart at a very obtuse patch corner is the usual case: the
+/// Laplacian pulls its inner vertex towards the corner, the completion pushes it out.
+void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<char>& fixed,
+              const std::vector<std::vector<int>>& neighbours, SmoothingReport& report) {
+  const int nv = quads.numVertices();
+  std::vector<std::vector<int>> quadsOf(nv);
+  for (int q = 0; q < quads.numQuads(); ++q)
+    for (int v : quads.quads[q]) quadsOf[v].push_back(q);
+  auto worstAround = [&](int v) {
+    double worst = 1;
+    for (int q : quadsOf[v]) worst = std::min(worst, scaledJacobian(quads, q));
+    return worst;
+  };
+  std::vector<Vec3> candidates;
+  for (int sweep = 0; sweep < 10; ++sweep) {
+    bool changed = false;
+    for (int q = 0; q < quads.numQuads(); ++q) {
+      if (scaledJacobian(quads, q) > kMinScaledJacobian) continue;
+      for (int v : quads.quads[q]) {
+        if (fixed[v] || neighbours[v].empty()) continue;
+        const Vec3 original = quads.positions[v];
+        candidates.clear();
+        for (int r : quadsOf[v]) {
+          const auto& f = quads.quads[r];
+          const int i = int(std::find(f.begin(), f.end(), v) - f.begin());
+          candidates.push_back(quads.positions[f[(i + 1) % 4]] + quads.positions[f[(i + 3) % 4]] -
+                               quads.positions[f[(i + 2) % 4]]);
+        }
+        Vec3 average = Vec3::Zero();
+        for (int w : neighbours[v]) average += quads.positions[w];
+        candidates.push_back(average / double(neighbours[v].size()));
+        double best = worstAround(v);
+        Vec3 bestPosition = original;
+        for (const Vec3& c : candidates) {
+          quads.positions[v] = surface.closest(c).point;
+          const double worst = worstAround(v);
+          if (worst > best + 1e-9) best = worst, bestPosition = quads.positions[v];
+        }
+        quads.positions[v] = bestPosition;
+        if (bestPosition != original) changed = true, ++report.untangledMoves;
+      }
+    }
+    if (!changed) break;
+  }
+}
+
 }  // namespace
 
 SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
@@ -142,6 +192,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
       }
     }
   }
+  untangle(quads, index, fixed, neighbours, report);
   return report;
 }
 

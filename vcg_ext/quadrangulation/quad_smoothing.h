@@ -8,6 +8,9 @@
 // cutting across them. Vertices on the border of the quad mesh and vertices lying on a sharp
 // edge stay where they are. A round is undone for the vertices of any quad it would fold or
 // nearly flatten (scaled Jacobian dropping below kMinScaledJacobian, unless it was already).
+// Last, the vertices of quads still folded or nearly flat are untangled: each tries the
+// parallelogram completions of its quads and its neighbours' average (on the surface) and
+// keeps the position that most raises the worst scaled Jacobian around it.
 #pragma once
 
 #include "quadrangulation/quad_mesh.h"
@@ -27,6 +30,7 @@ struct SmoothingReport {
   int fixedVertices = 0;      ///< border and feature vertices
   int revertedMoves = 0;      ///< vertex moves undone because they folded a quad
   int snappedMoves = 0;       ///< vertex moves that ended on a feature line
+  int untangledMoves = 0;     ///< vertex moves of the untangling pass
 };
 
 /// `surfacePositions` / `surfaceTriangles`: the surface the quads sample (e.g. the layout's
