@@ -138,23 +138,58 @@ done
 
 ## Against the paper's Table 1
 
-- **|G|**: ours has about 3× the paper's nodes for the same φ: one node per auxiliary point,
-  incident triangle and unoccluded direction (up to six per point, §3.2), at the points the φ
-  rule places (the rule bounds the angle seen from the opposite vertex of both incident
-  triangles). The paper's count is probably of another unit (points, or nodes without the
-  occluded directions); paths and layouts do not depend on it.
+- **|G|**: ours has 2.5–3× the paper's nodes for the same φ (bunny 1.53M against 528K): one
+  node per auxiliary point, incident triangle and unoccluded direction (up to six per point,
+  §3.2), at the points the φ rule needs (each pair of consecutive points subtends less than φ
+  at the opposite vertex of both incident triangles; placed by a greedy walk, 17–33% fewer
+  than equal steps). The paper's count is probably of another unit (points, or nodes without
+  the occluded directions); paths and layouts do not depend on it.
 - **Patches and t-junctions**: the paper's layouts come from its own fields, ours from fields
   fcql computes (curvature-aligned, smoothed), except dragon, eight and lilium, which ship a
   field. Different fields have different singularities (bunny: 38 here), hence different
   layouts; the counts are of the same order (bunny, fertility, rockerarm). The dragon's shipped
   field has 795 singularities, so its layout has several times the paper's 1024 patches.
-- **Time**: the tracing (Dijkstra from every port with k = 30 sinks) dominates; with k = 30 it
-  explores a large part of G from each of the hundreds of ports. The 10× target of the issue is
-  not met.
-- **Quality**: misalignment is high on the open surfaces lilium and aqua_center: their long
-  strips of patches along the borders are mapped with their boundaries fixed by arc length,
-  which shears the grid when the two long sides of a strip are not parallel; smoothing does not
-  remove a shear of that range.
+- **Time**: the tracing (a Dijkstra search from every port until k sinks are reached)
+  dominates where k = 30: bunny 3.2 s of 6.1 s. Against the paper's Table 1 we are 4.3×
+  (bunny), 3.0× (fertility) and 7.2× (rockerarm, but on a 20K-face mesh, theirs has 70K)
+  faster: the 10× target of the issue is not met. The dragon's 0-1 layout program runs into
+  its 60 s limit.
+- **Quality**: every finished mesh is within 1% of the diagonal (the quad stage samples again
+  with smaller quads where it is not: joint and rockerarm twice, fandisk once). Misalignment
+  is high on the open surfaces lilium and aqua_center: their long strips of patches along the
+  borders are mapped with their boundaries fixed by arc length, which shears the grid when the
+  two long sides of a strip are not parallel; elsewhere 17–37% of the quads are more than
+  π/16 off the field, against the paper's 2–9%. A few quads stay nearly flat or just folded
+  (scaled Jacobian −0.03 to 0 on joint, lilium, rockerarm).
+- **Dragon**: its side lengths are now found (the program is solved by independent parts), but
+  the largest part, about 1000 chord classes tied by 700 equalities after the zero-chain
+  splits, uses the whole time limit in every round, and after five rounds the sampled mesh is
+  not manifold (an edge used twice in the same direction), which `fcql run` reports as an
+  error after about 6 minutes; the table shows the 300 s cut-off.
+
+## Speed: profile and changes
+
+`perf record` on `fcql trace bunny.obj --alpha 15 --k 30` put 88% of the time in the Dijkstra
+loop (`Search::run`), most of it waiting on memory: the arcs and arc offsets of each settled
+node, the heap's sift-downs, the distance of each arc's target. The changes, each measured on
+the bunny's tracing stage (2 threads) right after the previous one: 11.2 s; faces combed along a
+spanning tree and nodes numbered combed direction first (a search keeps its direction, so it
+touches a quarter of the node array), arcs as one {target, weight} array with border terminals
+flagged in the target, distance and predecessor side by side: 7.2 s; a radix heap instead of the
+4-ary heap: 5.0 s; auxiliary points by a greedy walk (30% fewer arcs): 3.8 s; samples in Morton
+order: 3.5 s; crossing classification with a per-arc marker instead of sorting every crossing:
+3.1 s (same candidates and crossings as before up to the sampling change). Before (commit
+b80c01c) and after, measured in one run on this machine:
+
+| mesh | tracing before → after | total before → after |
+|---|---:|---:|
+| bunny (α 15, k 30) | 10.73 → 3.12 s (3.4×) | 14.15 → 5.93 s (2.4×) |
+| fertility (α 30, k 30) | 8.54 → 2.93 s (2.9×) | 13.76 → 7.11 s (1.9×) |
+| rockerarm (α 30, k 30) | 8.42 → 2.06 s (4.1×) | 13.36 → 5.74 s (2.3×) |
+
+Peak memory fell from 526 to 290 MB on the bunny. The side lengths, solved by independent
+parts, no longer wait for lp_solve to prove optimality on one large program (kitten's quad stage
+2.2 → 0.2 s); the quad stage now includes the distance check and its refinements.
 NOTES
   if [ ${#pictures[@]} -gt 0 ]; then
     echo
