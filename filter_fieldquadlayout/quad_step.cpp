@@ -3,6 +3,7 @@
 #include "metrics/quad_quality.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 namespace fcql_meshlab {
@@ -77,15 +78,11 @@ std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
   if (r.quad.splitPatches > 0)
     lines.push_back("Zero chains: " + std::to_string(r.quad.splitPatches) +
                     " patches split by Catmull-Clark steps (" + std::to_string(r.quad.splitRounds) + " rounds)");
-  if (r.quad.refinements > 0) {
-    char refined[240];
-    const double diagonal = r.quad.deviationLimit / options().maxDeviation;
-    std::snprintf(refined, sizeof refined,
-                  "Refined %d time(s) to stay within %g%% of the diagonal: target edge length %.6g -> %.6g, deviation %.3g%%%s",
-                  r.quad.refinements, 100 * options().maxDeviation, r.targetEdgeLength, r.quad.targetEdgeLength,
-                  100 * r.quad.deviation / diagonal,
-                  r.quad.deviation > r.quad.deviationLimit ? " (still above: refinements exhausted)" : "");
-    lines.push_back(refined);
+  fcql::QuadrangulationOptions used = options();
+  used.targetEdgeLength = r.targetEdgeLength;
+  for (std::string note : fcql::refinementNotes(r.quad, used)) {
+    note[0] = char(std::toupper(static_cast<unsigned char>(note[0])));  // log lines start with a capital
+    lines.push_back(note);
   }
   if (r.quad.polygonPatches > 0)
     lines.push_back(std::to_string(r.quad.polygonPatches) +

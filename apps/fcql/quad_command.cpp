@@ -34,14 +34,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   options.smoothing.sharpAngleDeg = cl.number("sharp-angle", 35.0, 0.0, 180.0);
   options.maxDeviation = cl.number("max-deviation", 0.01, 0.0, 1.0);
   QuadrangulationResult r = quadrangulate(ls.patches, options);
-  if (r.refinements > 0) {
-    char note[240];
-    std::snprintf(note, sizeof note,
-                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation %.3g%%%s",
-                  r.refinements, 100 * options.maxDeviation, target, r.targetEdgeLength, 100 * r.deviation / diagonal,
-                  r.deviation > r.deviationLimit ? " (still above: refinements exhausted)" : "");
-    progress(quiet, note);
-  }
+  for (const std::string& note : refinementNotes(r, options)) progress(quiet, note);
   qs.graph = std::move(r.graph);
   qs.lengths = std::move(r.lengths);
   qs.mesh = std::move(r.mesh);

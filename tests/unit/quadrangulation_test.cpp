@@ -211,6 +211,11 @@ TEST(Quadrangulation, CoarseTargetsAreRefinedUntilCloseToTheSurface) {
   EXPECT_NEAR(refined.deviationLimit, 0.01 * diagonal, 1e-9 * diagonal);
   // Measured against the input mesh as the CLI does: within the bound too.
   EXPECT_LT(measureQuadQuality(refined.mesh, q->mesh, q->field, index).hausdorffRelative, 0.01);
+  const std::vector<std::string> notes = refinementNotes(refined, options);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("refined " + std::to_string(refined.refinements) + " time(s)"), std::string::npos) << notes[0];
+  options.maxDeviation = 0;
+  EXPECT_TRUE(refinementNotes(coarse, options).empty());
   options.maxDeviation = -1;
   EXPECT_THROW(quadrangulate(q->patches, options), std::invalid_argument);
 }

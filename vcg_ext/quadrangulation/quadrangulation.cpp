@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace fcql {
@@ -72,12 +73,41 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   while (r.deviation > limit && r.refinements < options.maxRefinements) {
     finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviation), 0.5, 0.9);
     const int refinements = r.refinements + 1;
-    r = quadrangulateOnce(layout, finer);
-    r.refinements = refinements;
-    r.deviation = hausdorffDistance(r.mesh, surface, samples);
+    try {
+      QuadrangulationResult next = quadrangulateOnce(layout, finer);
+      next.refinements = refinements;
+      next.deviation = hausdorffDistance(next.mesh, surface, samples);
+      r = std::move(next);
+    } catch (const std::runtime_error& e) {
+      // A finer pass that fails (zero chains that do not resolve at that size, say) leaves
+      // the last good mesh, which says why it is still too far from the surface.
+      r.refinementProblem = "target edge " + std::to_string(finer.targetEdgeLength) + ": " + e.what();
+      break;
+    }
   }
   r.deviationLimit = limit;
   return r;
+}
+
+std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const QuadrangulationOptions& options) {
+  std::vector<std::string> notes;
+  if (options.maxDeviation <= 0) return notes;
+  char line[400];
+  const double diagonal = r.deviationLimit / options.maxDeviation;
+  if (r.refinements > 0) {
+    std::snprintf(line, sizeof line,
+                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation %.3g%%%s",
+                  r.refinements, 100 * options.maxDeviation, options.targetEdgeLength, r.targetEdgeLength,
+                  diagonal > 0 ? 100 * r.deviation / diagonal : 0.0,
+                  r.deviation > r.deviationLimit ? " (still above: refinements exhausted)" : "");
+    notes.push_back(line);
+  }
+  if (!r.refinementProblem.empty()) {
+    std::snprintf(line, sizeof line, "warning: a finer pass to get within %g%% of the diagonal failed, the coarser mesh is kept (",
+                  100 * options.maxDeviation);
+    notes.push_back(line + r.refinementProblem + ")");
+  }
+  return notes;
 }
 
 }  // namespace fcql

@@ -6,6 +6,9 @@
 #include "quadrangulation/quad_smoothing.h"
 #include "quadrangulation/zero_chains.h"
 
+#include <string>
+#include <vector>
+
 namespace fcql {
 
 struct QuadrangulationResult {
@@ -21,6 +24,7 @@ struct QuadrangulationResult {
   int refinements = 0;          ///< times the target was lowered to meet maxDeviation
   double deviation = 0;         ///< Hausdorff distance to the surface, absolute (0 if not measured)
   double deviationLimit = 0;    ///< maxDeviation in mesh units (0 if not asked for)
+  std::string refinementProblem;  ///< why a finer pass failed (the mesh is then the last good one)
 };
 
 constexpr double kQuickSideLengthSeconds = 2;
@@ -46,5 +50,9 @@ struct QuadrangulationOptions {
 /// rounds, or if the quad mesh comes out non-manifold (never returned as if valid). Disks
 /// with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
+
+/// Log lines about the distance check of a result made with `options`: how often and how far
+/// the target was lowered, and why a finer pass failed (none if nothing happened).
+std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const QuadrangulationOptions& options);
 
 }  // namespace fcql
