@@ -100,6 +100,31 @@ Vec3 intersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return a + r * std::clamp(t, 0.0, 1.0);
 }
 
+/// Whether segment [a0, a1] meets barrier chord c within the part of it the path really
+/// covers: a chord that ends inside its triangle (at a t-junction) is only a barrier up to that
+/// end, while its edge coordinates describe the whole straight move.
+bool meetsBeforeEnd(const Vec3& a0, const Vec3& a1, const BarrierSet::Chord& c) {
+  const Vec3 r = c.b - c.a, s = a1 - a0;
+  const double length2 = r.squaredNorm();
+  if (!(length2 > 0)) return false;  // the path ended where the chord began
+  const Vec3 n = r.cross(s);
+  const double nn = n.squaredNorm();
+  double t;  // parameter along c.a → c.b of the meeting point
+  if (nn <= 1e-24 * length2 * s.squaredNorm()) {
+    // Parallel (overlapping, since the chords are related): where a0 or a1 falls on c.
+    t = std::max((a0 - c.a).dot(r), (a1 - c.a).dot(r)) / length2;
+    const double low = std::min((a0 - c.a).dot(r), (a1 - c.a).dot(r)) / length2;
+    if (c.endsInsideA && t < 0) return false;
+    if (c.endsInsideB && low > 1) return false;
+    return true;
+  }
+  t = (a0 - c.a).cross(s).dot(n) / nn;
+  const double tolerance = 1e-9;
+  if (c.endsInsideA && t < -tolerance) return false;
+  if (c.endsInsideB && t > 1 + tolerance) return false;
+  return true;
+}
+
 /// A radix heap (Ahuja, Mehlhorn, Orlin, Tarjan 1990) of (distance, node): a monotone
 /// priority queue, which is all Dijkstra needs (no key pushed is below the last one popped).
 /// Non-negative floats order like their bit patterns, so keys are those bits; an entry lives
@@ -223,6 +248,7 @@ public:
             for (const auto& c : chords) {
               ChordRelation r = relateChords(seg.from, seg.to, c.from, c.to);
               if (r == ChordRelation::Disjoint) continue;
+              if ((c.endsInsideA || c.endsInsideB) && !meetsBeforeEnd(a0, a1, c)) continue;
               if ((seg.direction - c.direction) % 2 == 0) {
                 blocked = true;  // tangential: never crossed
                 break;
@@ -341,7 +367,8 @@ void BarrierSet::add(const TracedPath& path, int id) {
   for (std::size_t i = 0; i < path.segments.size(); ++i) {
     const PathSegment& s = path.segments[i];
     if (s.face < 0 || s.face >= int(perFace_.size())) continue;
-    perFace_[s.face].push_back({s.from, s.to, s.direction, id, path.points[i].position, path.points[i + 1].position});
+    perFace_[s.face].push_back({s.from, s.to, s.direction, id, path.points[i].position, path.points[i + 1].position,
+                                path.points[i].kind == PathPoint::Crossing, path.points[i + 1].kind == PathPoint::Crossing});
   }
   ++count_;
 }

@@ -29,6 +29,10 @@ public:
     int direction;
     int id;
     Vec3 a, b;  ///< endpoints
+    /// The path stops inside the triangle at a (or b), on another separatrix (a t-junction):
+    /// the chord's `from` (or `to`) is then the edge point beyond, where the straight move
+    /// would have ended, and only the part up to the real end is a barrier.
+    bool endsInsideA = false, endsInsideB = false;
   };
   const std::vector<Chord>& inFace(int f) const { return perFace_[f]; }
 
