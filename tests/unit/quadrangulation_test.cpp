@@ -141,10 +141,44 @@ TEST(Quadrangulation, QuadMeshCheckFindsDefects) {
   EXPECT_TRUE(ok.manifold);
   EXPECT_EQ(ok.borderLoops, 1);
   EXPECT_EQ(ok.eulerCharacteristic, 1);
+  EXPECT_EQ(ok.components, 1);
+  EXPECT_EQ(ok.genus, 0);
+  // A second strip apart from the first: two components, two border loops, genus still 0.
+  QuadMesh two = m;
+  for (const Vec3& p : m.positions) two.positions.push_back(p + Vec3(5, 0, 0));
+  two.quads.push_back({6, 7, 8, 9});
+  two.quads.push_back({7, 10, 11, 8});
+  const QuadMeshReport apart = checkQuadMesh(two);
+  EXPECT_EQ(apart.components, 2);
+  EXPECT_EQ(apart.borderLoops, 2);
+  EXPECT_EQ(apart.eulerCharacteristic, 2);
+  EXPECT_EQ(apart.genus, 0);
+  // The same count for triangles: a split square has one border loop, χ = 1.
+  const SurfaceTopology square = triangleMeshTopology(5, {{0, 1, 2}, {0, 2, 3}});
+  EXPECT_EQ(square.borderLoops, 1);
+  EXPECT_EQ(square.eulerCharacteristic, 1);
+  EXPECT_EQ(square.components, 1);
   m.quads.push_back({0, 1, 2, 3});  // the same quad twice: edges used twice the same way
   QuadMeshReport bad = checkQuadMesh(m);
   EXPECT_FALSE(bad.manifold);
   EXPECT_FALSE(bad.problem.empty());
+}
+
+TEST(Quadrangulation, TwoComponentsGiveTwoClosedQuadMeshes) {
+  // A rounded box and a torus beside it, in one mesh: each component gets its own layout and
+  // quads; the result has both, closed, with the genus of the torus.
+  SurfaceMesh box = makeRoundedBox(), torus = makeTorus();
+  std::vector<Vec3> positions = box.positions();
+  std::vector<std::array<int, 3>> faces = box.faces();
+  const int n = int(positions.size());
+  for (const Vec3& p : torus.positions()) positions.push_back(p + Vec3(4, 0, 0));
+  for (const auto& f : torus.faces()) faces.push_back({f[0] + n, f[1] + n, f[2] + n});
+  auto q = layoutOf(SurfaceMesh(positions, faces));
+  ASSERT_EQ(q->mesh.numComponents(), 2);
+  const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.02);
+  EXPECT_EQ(r.report.components, 2);
+  EXPECT_EQ(r.report.genus, 1);
+  checkQuadMesh(*q, r, "box and torus");
 }
 
 TEST(Quadrangulation, FullStageOnGeneratedMeshesIsCloseToTheSurfaceAndUnfolded) {

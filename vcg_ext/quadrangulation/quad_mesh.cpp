@@ -1,9 +1,63 @@
 #include "quadrangulation/quad_mesh.h"
 
 #include <map>
+#include <numeric>
 #include <sstream>
 
 namespace fcql {
+namespace {
+
+int findRoot(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+/// Components of the faces (vertex lists), joined through shared vertices.
+template <std::size_t N>
+int countComponents(int numVertices, const std::vector<std::array<int, N>>& faces) {
+  std::vector<int> parent(numVertices);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<char> used(numVertices, 0);
+  for (const auto& f : faces)
+    for (std::size_t i = 0; i < N; ++i) {
+      used[f[i]] = 1;
+      parent[findRoot(parent, f[i])] = findRoot(parent, f[0]);
+    }
+  int components = 0;
+  for (int v = 0; v < numVertices; ++v) components += used[v] && findRoot(parent, v) == v;
+  return components;
+}
+
+}  // namespace
+
+SurfaceTopology triangleMeshTopology(int numVertices, const std::vector<std::array<int, 3>>& triangles) {
+  SurfaceTopology t;
+  std::map<std::pair<int, int>, int> directed;
+  std::vector<char> used(numVertices, 0);
+  for (const auto& f : triangles)
+    for (int i = 0; i < 3; ++i) {
+      directed[{f[i], f[(i + 1) % 3]}] += 1;
+      used[f[i]] = 1;
+    }
+  long edges = 0;
+  std::map<int, int> borderNext;
+  for (const auto& e : directed) {
+    const bool twin = directed.count({e.first.second, e.first.first}) > 0;
+    if (!twin || e.first.first < e.first.second) ++edges;
+    if (!twin) borderNext[e.first.first] = e.first.second;
+  }
+  std::map<int, char> seen;
+  for (const auto& b : borderNext) {
+    if (seen.count(b.first)) continue;
+    ++t.borderLoops;
+    for (int v = b.first; !seen.count(v); v = borderNext.count(v) ? borderNext[v] : b.first) seen[v] = 1;
+  }
+  long vertices = 0;
+  for (char u : used) vertices += u;
+  t.eulerCharacteristic = int(vertices - edges + long(triangles.size()));
+  t.components = countComponents(numVertices, triangles);
+  return t;
+}
 
 QuadMeshReport checkQuadMesh(const QuadMesh& mesh) {
   QuadMeshReport r;
@@ -56,7 +110,8 @@ QuadMeshReport checkQuadMesh(const QuadMesh& mesh) {
     if (border && valence[v] != 3 && valence[v] != 2) ++r.irregularVertices;
   }
   r.eulerCharacteristic = used - int(edges) + mesh.numQuads();
-  r.genus = (2 - r.eulerCharacteristic - r.borderLoops) / 2;
+  r.components = countComponents(nv, mesh.quads);
+  r.genus = (2 * r.components - r.eulerCharacteristic - r.borderLoops) / 2;
   r.manifold = true;
   return r;
 }

@@ -25,13 +25,23 @@ struct QuadMeshReport {
   bool manifold = false;       ///< every edge in ≤ 2 quads, consistently oriented; vertex fans single
   int eulerCharacteristic = 0;
   int borderLoops = 0;
-  int genus = 0;
+  int components = 0;          ///< connected components (quads sharing vertices)
+  int genus = 0;               ///< summed over components: (2·components − χ − borderLoops) / 2
   int irregularVertices = 0;   ///< interior valence ≠ 4, border valence ∉ {2 at corners, 3}
   int unusedVertices = 0;
   std::string problem;
 };
 
 QuadMeshReport checkQuadMesh(const QuadMesh& mesh);
+
+/// Euler characteristic, border loops and components of a triangle mesh (vertices that no
+/// triangle uses are ignored): what a quad mesh sampled from it must also have.
+struct SurfaceTopology {
+  int eulerCharacteristic = 0;
+  int borderLoops = 0;
+  int components = 0;
+};
+SurfaceTopology triangleMeshTopology(int numVertices, const std::vector<std::array<int, 3>>& triangles);
 
 /// OBJ text with `v` and `f a b c d` lines only.
 std::string quadMeshToObj(const QuadMesh& mesh);

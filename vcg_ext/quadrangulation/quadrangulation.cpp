@@ -43,6 +43,16 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
   if (!r.report.manifold)
     throw std::runtime_error("the quad mesh came out non-manifold (" + r.report.problem +
                              "): the layout has a patch the sampling cannot handle");
+  // The quads must cover the surface as it is: a crack (a side sampled twice) or a missing
+  // patch shows as border loops or an Euler characteristic the surface does not have.
+  const SurfaceTopology surface = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
+  if (r.report.borderLoops != surface.borderLoops || r.report.eulerCharacteristic != surface.eulerCharacteristic ||
+      r.report.components != surface.components)
+    throw std::runtime_error("the quad mesh does not have the surface's topology (" + std::to_string(r.report.borderLoops) +
+                             " border loops, Euler characteristic " + std::to_string(r.report.eulerCharacteristic) + ", " +
+                             std::to_string(r.report.components) + " components, where the surface has " +
+                             std::to_string(surface.borderLoops) + ", " + std::to_string(surface.eulerCharacteristic) +
+                             ", " + std::to_string(surface.components) + "): the layout has a patch the sampling cannot handle");
   r.targetEdgeLength = options.targetEdgeLength;
   return r;
 }
@@ -61,11 +71,17 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   // The distance to the surface, measured on the layout's triangles (the input, cut): where it
   // exceeds the bound, sample again more finely. A chord of a curve deviates from it by about
   // h²/(8R) for edges of length h, hence the square root in the step.
-  Vec3 lo = layout.positions.front(), hi = lo;
-  for (const Vec3& p : layout.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  // Samples: the vertices the triangles use (a mesh file may hold unused ones) and centroids.
+  std::vector<char> used(layout.positions.size(), 0);
+  for (const auto& t : layout.triangles)
+    for (int v : t) used[v] = 1;
+  std::vector<Vec3> samples;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (used[v]) samples.push_back(layout.positions[v]);
+  Vec3 lo = samples.front(), hi = lo;
+  for (const Vec3& p : samples) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double limit = options.maxDeviation * (hi - lo).norm();
   const ClosestPointIndex surface(layout.positions, layout.triangles);
-  std::vector<Vec3> samples = layout.positions;
   for (const auto& t : layout.triangles)
     samples.push_back((layout.positions[t[0]] + layout.positions[t[1]] + layout.positions[t[2]]) / 3);
   r.deviation = hausdorffDistance(r.mesh, surface, samples);
