@@ -254,6 +254,32 @@ TEST(Quadrangulation, CoarseTargetsAreRefinedUntilCloseToTheSurface) {
   EXPECT_THROW(quadrangulate(q->patches, options), std::invalid_argument);
 }
 
+TEST(Quadrangulation, PatchWithASlitIsRejectedClearly) {
+  // A square patch (corners 0, 2, 8, 6 of a 3×3 grid) whose boundary runs from the middle of
+  // its bottom side to the centre and straight back: a separatrix that ends inside it. Its
+  // grid would fold onto itself, so the stage must refuse it and say why.
+  PatchLayout layout;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) layout.positions.push_back(Vec3(i, j, 0));
+  layout.numOriginalVertices = 9;
+  layout.corner = {1, 1, 1, 0, 1, 0, 1, 0, 1};
+  PatchReport rep;
+  rep.valid = rep.isDisk = true;
+  rep.corners = 4;
+  rep.boundaryLoops = 1;
+  rep.loop = {0, 1, 4, 1, 2, 5, 8, 7, 6, 3};
+  rep.loopCorner = {1, 0, 0, 0, 1, 0, 1, 0, 1, 0};
+  rep.loopTriangle.assign(rep.loop.size(), 0);
+  layout.patches = {rep};
+  try {
+    buildPatchGraph(layout);
+    FAIL() << "a patch with a slit was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("slit"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("vertex 4"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
   // A t-junction: patch A's right side is two segments (1, 2), the left sides of patches B and
   // C; A's left side is segment 0. Opposite single segments are chord classes: {1, 3}, {2, 4},
@@ -413,8 +439,8 @@ TEST(Quadrangulation, CoarseInputsGiveAValidQuadMeshOrAClearError) {
     }
   int succeeded = 0;
   for (const SurfaceMesh& mesh : {tet, SurfaceMesh(grid, squares)}) {
-    auto q = layoutOf(mesh);
     try {
+      auto q = layoutOf(mesh);  // its patch graph may already refuse the layout (a slit)
       const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.05);
       EXPECT_TRUE(r.report.manifold) << r.report.problem;
       EXPECT_EQ(r.report.genus, q->mesh.genus());

@@ -84,6 +84,21 @@ PatchGraph buildPatchGraph(const PatchLayout& layout) {
     } else if (side != 3) {
       throw std::runtime_error("patch " + std::to_string(p) + " does not have 4 corners");
     }
+    // A boundary that runs along a segment and straight back is a slit: a separatrix ending
+    // inside the patch (at a singularity whose other separatrices are missing). Its grid
+    // would fold onto itself.
+    std::vector<SideSegment> around;
+    for (const auto& list : ps.sides) around.insert(around.end(), list.begin(), list.end());
+    for (std::size_t i = 0; i < around.size() && around.size() > 1; ++i) {
+      const SideSegment& a = around[i];
+      const SideSegment& b = around[(i + 1) % around.size()];
+      if (a.segment == b.segment && a.reversed != b.reversed) {
+        const LayoutSegment& seg = g.segments[a.segment];
+        const int tip = a.reversed ? seg.nodeA : seg.nodeB;
+        throw std::runtime_error("patch " + std::to_string(p) + " has a slit: a separatrix ends inside it, at vertex " +
+                                 std::to_string(tip) + " (a singularity left with fewer separatrices than ports); it cannot be cut into quads");
+      }
+    }
   }
   return g;
 }
