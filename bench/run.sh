@@ -150,10 +150,10 @@ done
   layouts; the counts are of the same order (bunny, fertility, rockerarm). The dragon's shipped
   field has 795 singularities, so its layout has several times the paper's 1024 patches.
 - **Time**: the tracing (a Dijkstra search from every port until k sinks are reached)
-  dominates where k = 30: bunny 3.0 s of 5.7 s. Against the paper's Table 1 we are 4.6×
-  (bunny), 2.8× (fertility) and 5.9× (rockerarm, but on a 20K-face mesh, theirs has 70K)
-  faster: the 10× target of the issue is not met. Totals vary by about 10% from run to run on
-  this machine. The dragon's 0-1 layout program runs into its 60 s limit.
+  dominates where k = 30: bunny 3.5 s of 6.6 s. Against the paper's Table 1 we are 4.0×
+  (bunny), 2.6× (fertility) and 5.9× (rockerarm, but on a 20K-face mesh, theirs has 70K)
+  faster: the 10× target of the issue is not met. Totals vary by 10–15% from run to run on
+  this machine (the bunny took 5.7 s in the run before this one). The dragon's 0-1 layout program runs into its 60 s limit.
 - **Quality**: every finished mesh is within 1% of the diagonal (the quad stage samples again
   with smaller quads where it is not: joint and rockerarm twice, fandisk once). Misalignment
   is high on the open surfaces lilium and aqua_center: their long strips of patches along the
@@ -161,10 +161,12 @@ done
   two long sides of a strip are not parallel; elsewhere 17–37% of the quads are more than
   π/16 off the field, against the paper's 2–9%. A few quads stay nearly flat or just folded
   (scaled Jacobian −0.03 to 0 on joint, lilium, rockerarm).
-- **Dragon**: its side lengths are now found (the program is solved by independent parts),
-  but its layout has 26 patches with 5 corners and 322 t-junctions, and after the zero-chain
-  splits the sampled mesh is not manifold (an edge used twice in the same direction): `fcql run`
-  stops with that error (the row above) and writes nothing broken. The largest side-length part
+- **Dragon**: its layout has 26 patches with 5 corners, 322 t-junctions and two patches with
+  a slit: a separatrix that ends inside the patch, at a singularity left with fewer
+  separatrices than ports. No grid fits such a patch (it folded the sampled mesh onto itself,
+  which came out non-manifold after minutes of work), so the layout now reports them as invalid
+  and the quad stage refuses them at once with the patch and the vertex (the row above). Its
+  side lengths are otherwise found: the program is solved by independent parts; the largest
   (about 1000 chord classes tied by 700 equalities) needs the whole time limit in each round.
 
 ## Speed: profile and changes

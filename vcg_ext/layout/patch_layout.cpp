@@ -433,6 +433,12 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     // χ of the patch cut open along its boundary (see the header).
     rep.eulerCharacteristic = int(interiorVertices - interiorHalfEdges[p] / 2 + rep.triangles);
     rep.isDisk = rep.eulerCharacteristic == 1 && rep.boundaryLoops == 1;
+    // A boundary that goes x → v → x runs along a separatrix and straight back: a separatrix
+    // ends inside the patch, at v (a slit); no grid fits such a patch.
+    const int m = int(rep.loop.size());
+    for (int k = 0; k < m && m > 2 && rep.problem.empty(); ++k)
+      if (rep.loop[(k + m - 1) % m] == rep.loop[(k + 1) % m])
+        rep.problem = "a separatrix ends inside it (a slit at vertex " + std::to_string(rep.loop[k]) + ")";
     rep.valid = rep.isDisk && rep.corners == 4 && rep.problem.empty();
     if (rep.problem.empty() && !rep.isDisk)
       rep.problem = "not a disk (Euler characteristic " + std::to_string(rep.eulerCharacteristic) + ", " +
