@@ -78,6 +78,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   std::vector<Vec3> samples;
   for (std::size_t v = 0; v < used.size(); ++v)
     if (used[v]) samples.push_back(layout.positions[v]);
+  if (samples.empty() || r.mesh.numQuads() == 0) return r;  // nothing to measure
   Vec3 lo = samples.front(), hi = lo;
   for (const Vec3& p : samples) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double limit = options.maxDeviation * (hi - lo).norm();
