@@ -280,6 +280,22 @@ TEST(Quadrangulation, PatchWithASlitIsRejectedClearly) {
   }
 }
 
+TEST(Quadrangulation, UnusedVerticesDoNotCountAsSurface) {
+  // A mesh file may hold vertices no face uses (here far away from the box): the distance check
+  // must measure the surface only, not refine again and again towards points that are not on it.
+  SurfaceMesh box = makeRoundedBox();
+  std::vector<Vec3> positions = box.positions();
+  positions.push_back(Vec3(40, 40, 40));
+  positions.push_back(Vec3(-40, 0, 0));
+  auto q = layoutOf(SurfaceMesh(positions, box.faces()));
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.03 * makeRoundedBox().boundingBoxDiagonal();
+  const QuadrangulationResult r = quadrangulate(q->patches, options);
+  EXPECT_EQ(r.refinements, 0);
+  EXPECT_LE(r.deviation, r.deviationLimit);
+  EXPECT_LT(r.deviationLimit, 0.011 * makeRoundedBox().boundingBoxDiagonal()) << "the limit follows the surface's size";
+}
+
 TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
   // A t-junction: patch A's right side is two segments (1, 2), the left sides of patches B and
   // C; A's left side is segment 0. Opposite single segments are chord classes: {1, 3}, {2, 4},
