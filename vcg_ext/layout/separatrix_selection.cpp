@@ -1,8 +1,9 @@
 #include "layout/separatrix_selection.h"
 
+#include "mesh/union_find.h"
+
 #include <algorithm>
 #include <chrono>
-#include <numeric>
 #include <set>
 #include <stdexcept>
 
@@ -67,16 +68,6 @@ std::set<std::vector<int>> conflictCliques(const SeparatrixGraph& h, const std::
   }
   return cliques;
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 }  // namespace
 

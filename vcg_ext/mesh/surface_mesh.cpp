@@ -1,10 +1,11 @@
 #include "mesh/surface_mesh.h"
 
+#include "mesh/union_find.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <sstream>
 #include <unordered_map>
 
@@ -14,16 +15,6 @@ namespace {
 std::uint64_t directedKey(int a, int b) {
   return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 std::string faceName(int f) { return "face " + std::to_string(f); }
 

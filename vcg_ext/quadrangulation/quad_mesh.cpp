@@ -1,31 +1,42 @@
 #include "quadrangulation/quad_mesh.h"
 
+#include "mesh/union_find.h"
+
 #include <map>
-#include <numeric>
 #include <sstream>
 
 namespace fcql {
 namespace {
 
-int findRoot(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 /// Components of the faces (vertex lists), joined through shared vertices.
 template <std::size_t N>
 int countComponents(int numVertices, const std::vector<std::array<int, N>>& faces) {
-  std::vector<int> parent(numVertices);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind sets(numVertices);
   std::vector<char> used(numVertices, 0);
   for (const auto& f : faces)
     for (std::size_t i = 0; i < N; ++i) {
       used[f[i]] = 1;
-      parent[findRoot(parent, f[i])] = findRoot(parent, f[0]);
+      sets.unite(f[i], f[0]);
     }
   int components = 0;
-  for (int v = 0; v < numVertices; ++v) components += used[v] && findRoot(parent, v) == v;
+  for (int v = 0; v < numVertices; ++v) components += used[v] && sets.find(v) == v;
   return components;
+}
+
+/// Loops of border edges, given the next vertex along the border from each border vertex.
+int countBorderLoops(const std::map<int, int>& borderNext) {
+  int loops = 0;
+  std::map<int, char> seen;
+  for (const auto& b : borderNext) {
+    if (seen.count(b.first)) continue;
+    ++loops;
+    for (int v = b.first; !seen.count(v);) {
+      seen[v] = 1;
+      auto next = borderNext.find(v);
+      v = next != borderNext.end() ? next->second : b.first;
+    }
+  }
+  return loops;
 }
 
 }  // namespace
@@ -46,12 +57,7 @@ SurfaceTopology triangleMeshTopology(int numVertices, const std::vector<std::arr
     if (!twin || e.first.first < e.first.second) ++edges;
     if (!twin) borderNext[e.first.first] = e.first.second;
   }
-  std::map<int, char> seen;
-  for (const auto& b : borderNext) {
-    if (seen.count(b.first)) continue;
-    ++t.borderLoops;
-    for (int v = b.first; !seen.count(v); v = borderNext.count(v) ? borderNext[v] : b.first) seen[v] = 1;
-  }
+  t.borderLoops = countBorderLoops(borderNext);
   long vertices = 0;
   for (char u : used) vertices += u;
   t.eulerCharacteristic = int(vertices - edges + long(triangles.size()));
@@ -92,12 +98,7 @@ QuadMeshReport checkQuadMesh(const QuadMesh& mesh) {
       borderNext[e.first.first] = e.first.second;
     }
   }
-  std::map<int, char> seen;
-  for (const auto& b : borderNext) {
-    if (seen.count(b.first)) continue;
-    ++r.borderLoops;
-    for (int v = b.first; !seen.count(v); v = borderNext.count(v) ? borderNext[v] : b.first) seen[v] = 1;
-  }
+  r.borderLoops = countBorderLoops(borderNext);
   int used = 0;
   for (int v = 0; v < nv; ++v) {
     if (uses[v] == 0) {

@@ -1,5 +1,7 @@
 #include "quadrangulation/side_lengths.h"
 
+#include "mesh/union_find.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,11 +22,6 @@ namespace {
 
 constexpr double kUnderWeight = 3.0;
 constexpr double kMaxStretch = 1.5;
-
-int findRoot(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
 
 /// Whether the opposite sides k and k + 2 of ps are one segment each (a hard equality that
 /// the classes below make implicit).
@@ -102,17 +99,15 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
   const int ns = int(graph.segments.size());
   // Segments that must be equal because they are the single-segment opposite sides of a
   // patch form classes (the chords of the layout): one integer count per class.
-  std::vector<int> parent(ns);
-  for (int s = 0; s < ns; ++s) parent[s] = s;
+  UnionFind chords(ns);
   for (const PatchSides& ps : graph.patches)
     for (int k = 0; k < 2 && ps.active; ++k)
-      if (singleSegmentPair(ps, k))
-        parent[findRoot(parent, ps.sides[k][0].segment)] = findRoot(parent, ps.sides[k + 2][0].segment);
+      if (singleSegmentPair(ps, k)) chords.unite(ps.sides[k][0].segment, ps.sides[k + 2][0].segment);
   std::vector<int> classOf(ns);
   std::vector<std::vector<double>> idealsOf(ns);
   std::vector<double> classMaxIdeal(ns, 0.0);
   for (int s = 0; s < ns; ++s) {
-    classOf[s] = findRoot(parent, s);
+    classOf[s] = chords.find(s);
     const double ideal = graph.segments[s].length / targetEdgeLength;
     idealsOf[classOf[s]].push_back(ideal);
     classMaxIdeal[classOf[s]] = std::max(classMaxIdeal[classOf[s]], ideal);
@@ -140,16 +135,14 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
   // A class in no equality just takes its best rounding; each other component is a small
   // program of its own, which lp_solve settles far faster than one program of thousands of
   // classes (the dragon's layout has 20K).
-  std::vector<int> link(ns);
-  for (int c = 0; c < ns; ++c) link[c] = c;
+  UnionFind link(ns);
   for (const SideEquality& eq : equalities)
-    for (std::size_t i = 1; i < eq.terms.size(); ++i)
-      link[findRoot(link, eq.terms[i].first)] = findRoot(link, eq.terms[0].first);
+    for (std::size_t i = 1; i < eq.terms.size(); ++i) link.unite(eq.terms[i].first, eq.terms[0].first);
   std::map<int, Component> components;
   for (int s = 0; s < ns; ++s)
-    if (classOf[s] == s) components[findRoot(link, s)].classes.push_back(s);
+    if (classOf[s] == s) components[link.find(s)].classes.push_back(s);
   for (int e = 0; e < int(equalities.size()); ++e)
-    components[findRoot(link, equalities[e].terms[0].first)].equalities.push_back(e);
+    components[link.find(equalities[e].terms[0].first)].equalities.push_back(e);
 
   SideLengths out;
   std::vector<int> count(ns, 0);
