@@ -11,8 +11,10 @@
 namespace fcql {
 namespace {
 
-/// One pass of the stage at one target edge length.
-QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options) {
+/// One pass of the stage at one target edge length; `surface` is the topology of the layout's
+/// triangles, which the quad mesh must have.
+QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options,
+                                        const SurfaceTopology& surface) {
   auto solveLengths = [&](const PatchGraph& graph) {
     if (options.ilpTimeLimit > kQuickSideLengthSeconds) {
       try {
@@ -45,7 +47,6 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
                              "): the layout has a patch the sampling cannot handle");
   // The quads must cover the surface as it is: a crack (a side sampled twice) or a missing
   // patch shows as border loops or an Euler characteristic the surface does not have.
-  const SurfaceTopology surface = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
   if (r.report.borderLoops != surface.borderLoops || r.report.eulerCharacteristic != surface.eulerCharacteristic ||
       r.report.components != surface.components)
     throw std::runtime_error("the quad mesh does not have the surface's topology (" + std::to_string(r.report.borderLoops) +
@@ -66,7 +67,8 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   if (!(options.maxDeviation >= 0) || !std::isfinite(options.maxDeviation))
     throw std::invalid_argument("the maximum deviation must be a finite number >= 0");
   if (options.maxRefinements < 0) throw std::invalid_argument("the number of refinements must be >= 0");
-  QuadrangulationResult r = quadrangulateOnce(layout, options);
+  const SurfaceTopology topology = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
+  QuadrangulationResult r = quadrangulateOnce(layout, options, topology);
   if (options.maxDeviation <= 0) return r;
   // The distance to the surface, measured on the layout's triangles (the input, cut): where it
   // exceeds the bound, sample again more finely. A chord of a curve deviates from it by about
@@ -91,7 +93,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviation), 0.5, 0.9);
     const int refinements = r.refinements + 1;
     try {
-      QuadrangulationResult next = quadrangulateOnce(layout, finer);
+      QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);
       next.refinements = refinements;
       next.deviation = hausdorffDistance(next.mesh, surface, samples);
       r = std::move(next);
