@@ -76,6 +76,18 @@ void checkQuadMesh(const Quadrangulated& q, const QuadrangulationResult& r, cons
             << 100 * quality.hausdorffRelative << "%" << std::endl;
 }
 
+/// The stage at `target` twice, without and with 10 rounds of smoothing, on the same sampling:
+/// no refinement (the unsmoothed mesh could need one where the smoothed one does not).
+std::pair<QuadrangulationResult, QuadrangulationResult> rawAndSmoothed(const Quadrangulated& q, double target) {
+  QuadrangulationOptions options;
+  options.targetEdgeLength = target;
+  options.maxDeviation = 0;
+  options.smoothing.iterations = 0;
+  QuadrangulationResult raw = quadrangulate(q.patches, options);
+  options.smoothing.iterations = 10;
+  return {std::move(raw), quadrangulate(q.patches, options)};
+}
+
 QuadrangulationResult quadrangulateWithDefaults(const Quadrangulated& q, double scale) {
   QuadrangulationOptions options;
   options.targetEdgeLength = scale * q.mesh.boundingBoxDiagonal();
@@ -191,13 +203,7 @@ TEST(Quadrangulation, FullStageOnGeneratedMeshesIsCloseToTheSurfaceAndUnfolded) 
 
 TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
   auto q = layoutOf(makeExample("open_cylinder"));
-  QuadrangulationOptions options;
-  options.targetEdgeLength = 0.03 * q->mesh.boundingBoxDiagonal();
-  options.maxDeviation = 0;  // the same sampling for both: no refinement of the unsmoothed one
-  options.smoothing.iterations = 0;
-  const QuadrangulationResult raw = quadrangulate(q->patches, options);
-  options.smoothing.iterations = 10;
-  const QuadrangulationResult smooth = quadrangulate(q->patches, options);
+  const auto [raw, smooth] = rawAndSmoothed(*q, 0.03 * q->mesh.boundingBoxDiagonal());
   ASSERT_EQ(raw.mesh.numVertices(), smooth.mesh.numVertices());
   // Border vertices (valence 3 or less on a cylinder cut into one patch) do not move.
   const std::vector<int> valence = valences(raw.mesh);
@@ -217,7 +223,10 @@ TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
   for (int i = 0; i < smooth.mesh.numQuads(); ++i) smoothWorst = std::min(smoothWorst, scaledJacobian(smooth.mesh, i));
   EXPECT_GE(smoothWorst, rawWorst - 1e-9);
   EXPECT_THROW({
-    QuadrangulationOptions bad = options;
+    QuadrangulationOptions bad;
+    bad.targetEdgeLength = 0.03 * q->mesh.boundingBoxDiagonal();
+    bad.maxDeviation = 0;
+    bad.smoothing.iterations = 10;
     bad.smoothing.step = 0;
     quadrangulate(q->patches, bad);
   }, std::invalid_argument);
@@ -500,13 +509,7 @@ TEST(Quadrangulation, SmoothingPutsVerticesOnSharpEdges) {
   SurfaceMesh cube = test::sharpCube(6);
   const CrossField field = test::axisField(cube);
   auto q = layoutOf(cube, &field);
-  QuadrangulationOptions options;
-  options.targetEdgeLength = 0.05 * q->mesh.boundingBoxDiagonal();
-  options.maxDeviation = 0;  // the same sampling for both: no refinement of the unsmoothed one
-  options.smoothing.iterations = 0;
-  const QuadrangulationResult raw = quadrangulate(q->patches, options);
-  options.smoothing.iterations = 10;
-  const QuadrangulationResult smooth = quadrangulate(q->patches, options);
+  const auto [raw, smooth] = rawAndSmoothed(*q, 0.05 * q->mesh.boundingBoxDiagonal());
   ASSERT_EQ(raw.mesh.numVertices(), smooth.mesh.numVertices());
   auto onCubeEdge = [](const Vec3& p) {
     int atFace = 0;
