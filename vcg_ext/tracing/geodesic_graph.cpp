@@ -20,14 +20,6 @@ struct BuildArc {
   GeodesicGraph::Arc arc;
 };
 
-/// Eq. 1 of the paper for a move w whose field direction is d (unit).
-double anisotropicLength(const Vec3& w, const Vec3& d, double alpha) {
-  double len = w.norm();
-  if (len <= 0) return 0;
-  double c = std::clamp(d.dot(w) / len, -1.0, 1.0);
-  return len * (1.0 + alpha * std::acos(c) / (kPi / 4));
-}
-
 bool withinSector(const Vec3& w, const Vec3& d) {
   double len = w.norm();
   return len > 0 && d.dot(w) >= kCos45 * len;
@@ -43,6 +35,13 @@ struct SingularStar {
 };
 
 }  // namespace
+
+double anisotropicLength(const Vec3& w, const Vec3& d, double alpha) {
+  double len = w.norm();
+  if (len <= 0) return 0;
+  double c = std::clamp(d.dot(w) / len, -1.0, 1.0);
+  return len * (1.0 + alpha * std::acos(c) / (kPi / 4));
+}
 
 void TracingParameters::validate() const {
   if (!(alpha >= 0) || !std::isfinite(alpha))

@@ -40,6 +40,10 @@
 
 namespace fcql {
 
+/// Eq. 1 of the paper: the length of a move w whose field direction is d (unit), penalised by
+/// its drift angle from d: |w|·(1 + α·angle(d, w)/(π/4)).
+double anisotropicLength(const Vec3& w, const Vec3& d, double alpha);
+
 struct TracingParameters {
   double alpha = 20.0;  ///< drift penalty of Eq. 1 (α ≥ 0)
   int k = 10;           ///< sinks reached before a search stops (k ≥ 1)

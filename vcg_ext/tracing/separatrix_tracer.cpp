@@ -14,17 +14,9 @@
 namespace fcql {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = 1e-9;
 
 int mod4(int x) { return ((x % 4) + 4) % 4; }
-
-double anisotropicLength(const Vec3& w, const Vec3& d, double alpha) {
-  double len = w.norm();
-  if (len <= 0) return 0;
-  double c = std::clamp(d.dot(w) / len, -1.0, 1.0);
-  return len * (1.0 + alpha * std::acos(c) / (kPi / 4));
-}
 
 /// Local index, in face f, of the edge carrying sample q.
 int localEdgeOfSample(const EdgeSampling& es, int q, int f) {
