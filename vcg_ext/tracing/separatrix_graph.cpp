@@ -1,9 +1,11 @@
 #include "tracing/separatrix_graph.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <thread>
 #include <unordered_map>
 
 namespace fcql {
@@ -33,7 +35,7 @@ SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vect
     if (c.portB != c.portA) h.arcsAtPort[c.portB].push_back(id);
     h.arcs.push_back(std::move(c));
   }
-  classifyCrossings(graph.mesh(), h);
+  classifyCrossings(graph.mesh(), h, graph.parameters().threads);
   return h;
 }
 
@@ -45,7 +47,7 @@ SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph, const Pro
   return buildSeparatrixGraph(graph, traceFromPorts(graph, ports, options, progress));
 }
 
-void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h) {
+void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h, int threads) {
   struct Piece {
     int arc;
     const PathSegment* segment;
@@ -56,28 +58,52 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h) {
       if (s.face >= 0) perFace[s.face].push_back({a, &s});
   // For each arc a, the arcs b > a it meets in some face, marked tangential if they do so in
   // any; pairs come out ordered by (a, b). A marker per arc replaces sorting every crossing.
-  h.tangentialPairs.clear();
-  h.orthogonalPairs.clear();
+  // The arcs are shared out in blocks among the threads, each block's pairs kept apart and
+  // joined in block order, so the result does not depend on the number of threads.
   const int n = int(h.arcs.size());
-  std::vector<unsigned char> met(n, 0);  // bit 0: met, bit 1: tangentially
-  std::vector<int> others;
-  for (int a = 0; a < n; ++a) {
-    for (const PathSegment& s : h.arcs[a].path.segments) {
-      if (s.face < 0) continue;
-      for (const Piece& piece : perFace[s.face]) {
-        if (piece.arc <= a) continue;
-        const PathSegment& t = *piece.segment;
-        if (relateChords(s.from, s.to, t.from, t.to) == ChordRelation::Disjoint) continue;
-        if (!met[piece.arc]) others.push_back(piece.arc);
-        met[piece.arc] |= (s.direction - t.direction) % 2 == 0 ? 3 : 1;
+  struct Block {
+    std::vector<std::pair<int, int>> tangential, orthogonal;
+  };
+  const int blockSize = 64;
+  const int numBlocks = (n + blockSize - 1) / blockSize;
+  std::vector<Block> blocks(numBlocks);
+  std::atomic<int> nextBlock{0};
+  auto work = [&]() {
+    std::vector<unsigned char> met(n, 0);  // bit 0: met, bit 1: tangentially
+    std::vector<int> others;
+    for (int block; (block = nextBlock.fetch_add(1)) < numBlocks;) {
+      Block& out = blocks[block];
+      for (int a = block * blockSize, end = std::min(n, a + blockSize); a < end; ++a) {
+        for (const PathSegment& s : h.arcs[a].path.segments) {
+          if (s.face < 0) continue;
+          for (const Piece& piece : perFace[s.face]) {
+            if (piece.arc <= a) continue;
+            const PathSegment& t = *piece.segment;
+            if (relateChords(s.from, s.to, t.from, t.to) == ChordRelation::Disjoint) continue;
+            if (!met[piece.arc]) others.push_back(piece.arc);
+            met[piece.arc] |= (s.direction - t.direction) % 2 == 0 ? 3 : 1;
+          }
+        }
+        std::sort(others.begin(), others.end());
+        for (int b : others) {
+          ((met[b] & 2) ? out.tangential : out.orthogonal).emplace_back(a, b);
+          met[b] = 0;
+        }
+        others.clear();
       }
     }
-    std::sort(others.begin(), others.end());
-    for (int b : others) {
-      ((met[b] & 2) ? h.tangentialPairs : h.orthogonalPairs).emplace_back(a, b);
-      met[b] = 0;
-    }
-    others.clear();
+  };
+  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min(threads, numBlocks));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+  h.tangentialPairs.clear();
+  h.orthogonalPairs.clear();
+  for (const Block& b : blocks) {
+    h.tangentialPairs.insert(h.tangentialPairs.end(), b.tangential.begin(), b.tangential.end());
+    h.orthogonalPairs.insert(h.orthogonalPairs.end(), b.orthogonal.begin(), b.orthogonal.end());
   }
 }
 

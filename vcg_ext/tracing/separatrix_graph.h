@@ -36,7 +36,8 @@ SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vect
 /// Runs a search from every port (k sinks, no barriers) and builds H.
 SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph, const ProgressCallback& progress = nullptr);
 
-/// Classifies every crossing between the arcs of `h` (fills tangentialPairs/orthogonalPairs).
-void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h);
+/// Classifies every crossing between the arcs of `h` (fills tangentialPairs/orthogonalPairs),
+/// on `threads` threads (0: all hardware threads); the result does not depend on them.
+void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h, int threads = 0);
 
 }  // namespace fcql

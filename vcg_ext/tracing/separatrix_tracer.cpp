@@ -229,9 +229,12 @@ public:
         if (barriers) {
           // Nodes at distance <= d are settled (ties aside): nothing to test there.
           if (state_[v].dist <= d) continue;
-          PathSegment seg = arcSegment(g_, u, v);
-          const auto& chords = barriers->inFace(seg.face);
-          if (!chords.empty()) {
+          // The move crosses u's face (for a source: the face behind v's edge); most faces
+          // hold no barrier, and then the move needs no geometry.
+          const int face = g_.isPortNode(u) ? -1 : g_.nodeFace(u);
+          if (face < 0 || !barriers->inFace(face).empty()) {
+            PathSegment seg = arcSegment(g_, u, v);
+            const auto& chords = barriers->inFace(seg.face);
             bool blocked = false;
             int crossing = -1;
             double crossingDistance = std::numeric_limits<double>::infinity();
@@ -337,16 +340,25 @@ private:
 }  // namespace
 
 ChordRelation relateChords(double a1, double b1, double a2, double b2) {
+  // Coordinates live on the triangle's boundary, a circle of length 3 (see traced_path.h):
+  // no fmod or rounding here, this runs for every pair of pieces sharing a triangle.
   auto same = [](double x, double y) {
     double d = std::abs(x - y);
     return d < kEps || std::abs(d - 3) < kEps;
   };
-  auto isCorner = [](double x) { return std::abs(x - std::round(x)) < kEps; };
+  auto isCorner = [](double x) {
+    return std::abs(x) < kEps || std::abs(x - 1) < kEps || std::abs(x - 2) < kEps || std::abs(x - 3) < kEps;
+  };
   if ((same(a1, a2) && same(b1, b2)) || (same(a1, b2) && same(b1, a2))) return ChordRelation::SameChord;
   for (double p : {a1, b1})
     for (double q : {a2, b2})
       if (same(p, q)) return isCorner(p) ? ChordRelation::Disjoint : ChordRelation::Touching;
-  auto along = [a1](double x) { return std::fmod(x - a1 + 6.0, 3.0); };
+  auto along = [a1](double x) {  // position of x after a1, going round, in [0, 3)
+    double t = x - a1;
+    if (t < 0) t += 3;
+    if (t >= 3) t -= 3;
+    return t;
+  };
   double end = along(b1);
   auto inside = [&](double x) {
     double t = along(x);
