@@ -51,6 +51,8 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
   stats.set("layout.iterations", ls.layout.iterations);
   stats.set("layout.dangling_ports", ls.layout.danglingAfterCycle);
   stats.set("layout.unresolved_ports", int(ls.layout.unresolvedPorts.size()));
+  stats.set("layout.dead_ends_removed", ls.layout.deadEndsRemoved);
+  stats.set("layout.added_corners", ls.patches.addedCorners);
   stats.set("layout.invalid_patches", ls.patches.numInvalidPatches());
   stats.set("layout.closing_lines", closing.linesAdded);
   std::vector<std::pair<std::string, int>> corners;

@@ -533,3 +533,95 @@ TEST(Quadrangulation, SmoothingPutsVerticesOnSharpEdges) {
   std::cout << "cube: " << rawOnEdges << " vertices on sharp edges before smoothing, " << smoothOnEdges << " after"
             << std::endl;
 }
+
+TEST(Quadrangulation, DeadEndSeparatrixIsRemovedAndItsPatchStillCut) {
+  // The rounded box's layout with two of the three separatrices at one of its singularities
+  // taken away: the third runs into the merged patch and stops there (a slit). removeDeadEnds
+  // must drop it, leaving the singularity inside a disk patch with at least 3 corners, and the
+  // quad stage must cut that patch into quads: pure, manifold, the box's topology.
+  auto q = layoutOf(makeRoundedBox());
+  ASSERT_EQ(q->layout.separatrices.size(), 12u);
+  const int v = q->graph->ports()[q->layout.separatrices[0].portA].vertex;
+  std::vector<LayoutSeparatrix> kept;
+  int droppedAtV = 0;
+  for (const auto& s : q->layout.separatrices) {
+    const bool atV = q->graph->ports()[s.portA].vertex == v || q->graph->ports()[s.portB].vertex == v;
+    if (atV && droppedAtV < 2) {
+      ++droppedAtV;
+      continue;
+    }
+    kept.push_back(s);
+  }
+  q->layout.separatrices = kept;
+  ASSERT_EQ(q->layout.separatrices.size(), 10u);
+  {
+    PatchLayout withSlit = buildPatchLayout(*q->graph, q->layout);
+    bool slit = false;
+    for (const auto& p : withSlit.patches) slit = slit || p.problem.find("slit") != std::string::npos;
+    EXPECT_TRUE(slit) << "the test set-up should leave a slit";
+  }
+  EXPECT_EQ(removeDeadEnds(*q->graph, q->layout), 1);
+  EXPECT_EQ(q->layout.separatrices.size(), 9u);
+  // No interior singular vertex keeps a single separatrix.
+  std::map<int, int> ends;
+  for (const auto& s : q->layout.separatrices)
+    for (int p : {s.portA, s.portB})
+      if (p >= 0) ++ends[q->graph->ports()[p].vertex];
+  for (const auto& [vertex, count] : ends) EXPECT_NE(count, 1) << "vertex " << vertex;
+  EXPECT_EQ(ends.count(v), 0u);
+  q->patches = buildPatchLayout(*q->graph, q->layout);
+  for (const auto& p : q->patches.patches) {
+    EXPECT_TRUE(p.isDisk) << p.problem;
+    EXPECT_GE(p.corners, 3) << p.problem;
+    EXPECT_EQ(p.problem.find("slit"), std::string::npos) << p.problem;
+  }
+  QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.05);
+  // The topology and the distance as for any output; the merged patch holds the box corner's
+  // cone point, which its flat chart does not see, so a few quads next to it may fold (3 of
+  // about 5400 here): bounded, not zero.
+  EXPECT_TRUE(r.report.manifold) << r.report.problem;
+  EXPECT_EQ(r.report.genus, 0);
+  EXPECT_EQ(r.report.eulerCharacteristic, 2);
+  EXPECT_EQ(r.report.unusedVertices, 0);
+  const ClosestPointIndex index(q->mesh);
+  const QuadQuality quality = measureQuadQuality(r.mesh, q->mesh, q->field, index);
+  EXPECT_LT(quality.hausdorffRelative, 0.01);
+  EXPECT_LT(quality.invertedQuads, r.mesh.numQuads() / 200);
+  EXPECT_GT(quality.meanScaledJacobian, 0.9);
+}
+
+TEST(Quadrangulation, TeardropPatchGetsCornersAddedOnItsBoundary) {
+  // A disk patch with a single corner (a teardrop, as around a singularity of index 3/4): its
+  // boundary, the 8 outer vertices of a 3×3 grid, has only vertex 0 as a corner. Corners are
+  // added until it has 3, each in the middle of the longest stretch between corners, then the
+  // patch graph cuts it as a 3-gon with its sides split at the new corners.
+  PatchLayout layout;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) layout.positions.push_back(Vec3(i, j, 0));
+  layout.numOriginalVertices = 9;
+  layout.corner.assign(9, 0);
+  layout.corner[0] = 1;
+  PatchReport rep;
+  rep.isDisk = true;
+  rep.corners = 1;
+  rep.boundaryLoops = 1;
+  rep.loop = {0, 1, 2, 5, 8, 7, 6, 3};
+  rep.loopCorner = {1, 0, 0, 0, 0, 0, 0, 0};
+  rep.loopTriangle.assign(rep.loop.size(), 0);
+  layout.patches = {rep};
+  EXPECT_EQ(addBoundaryCorners(layout, 0), 2);
+  const PatchReport& r = layout.patches[0];
+  EXPECT_EQ(r.corners, 3);
+  // The loop is 8 long: the first split is opposite vertex 0 (vertex 8, 4 along), the second
+  // in the middle of one of the two halves (2 along from a corner: vertex 2 or 6).
+  EXPECT_EQ(r.loopCorner, (std::vector<char>{1, 0, 1, 0, 1, 0, 0, 0}));
+  EXPECT_EQ(layout.corner[8], 1);
+  EXPECT_EQ(layout.corner[2], 1);
+  EXPECT_EQ(layout.addedCorners, 2);
+  // A patch that has 3 corners is left as it is.
+  EXPECT_EQ(addBoundaryCorners(layout, 0), 0);
+  PatchGraph g = buildPatchGraph(layout);
+  ASSERT_EQ(g.patches.size(), 1u);
+  EXPECT_EQ(g.patches[0].polygonCorners, 3);
+  EXPECT_EQ(g.segments.size(), 3u);
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace fcql {
@@ -164,8 +165,77 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   }
   for (int p = 0; p < numPorts; ++p)
     if (failed[p]) layout.unresolvedPorts.push_back(p);
+  layout.deadEndsRemoved = removeDeadEnds(graph, layout);
+  if (layout.deadEndsRemoved > 0)
+    layout.messages.push_back(std::to_string(layout.deadEndsRemoved) +
+                              " separatrices removed: they ended at a singularity no other separatrix reaches "
+                              "(its other ports unresolved, or a singularity of index 3/4 with a single port), "
+                              "which would leave a slit inside a patch");
   layout.propagationSeconds = since(start);
   return layout;
+}
+
+int removeDeadEnds(const GeodesicGraph& graph, Layout& layout) {
+  const auto& ports = graph.ports();
+  const SurfaceMesh& mesh = graph.mesh();
+  const int n = int(layout.separatrices.size());
+  std::vector<char> removed(n, 0);
+  // Separatrices ending at each interior singular vertex (both ends of a loop count).
+  std::map<int, std::vector<int>> endsAt;
+  auto vertexOf = [&](int port) { return port >= 0 && port < int(ports.size()) ? ports[port].vertex : -1; };
+  for (int i = 0; i < n; ++i) {
+    const auto& s = layout.separatrices[i];
+    for (int v : {vertexOf(s.portA), vertexOf(s.portB)})
+      if (v >= 0 && !mesh.isBorderVertex(v)) endsAt[v].push_back(i);
+  }
+  // T-junction paths that end on each separatrix: they would dangle without it.
+  std::vector<std::vector<int>> endingOn(n);
+  for (int i = 0; i < n; ++i) {
+    const auto& s = layout.separatrices[i];
+    if (s.kind == LayoutSeparatrix::TJunction && s.path.barrier >= 0 && s.path.barrier < n)
+      endingOn[s.path.barrier].push_back(i);
+  }
+  auto liveEnds = [&](int v) {
+    int count = 0;
+    for (int i : endsAt[v]) count += removed[i] ? 0 : 1;
+    return count;
+  };
+  std::vector<int> stack;
+  for (const auto& [v, list] : endsAt)
+    if (list.size() == 1) stack.push_back(list[0]);
+  int count = 0;
+  while (!stack.empty()) {
+    int i = stack.back();
+    stack.pop_back();
+    if (removed[i]) continue;
+    removed[i] = 1;
+    ++count;
+    const auto& s = layout.separatrices[i];
+    for (int v : {vertexOf(s.portA), vertexOf(s.portB)})
+      if (v >= 0 && !mesh.isBorderVertex(v) && liveEnds(v) == 1)
+        for (int j : endsAt[v])
+          if (!removed[j]) stack.push_back(j);
+    for (int j : endingOn[i]) stack.push_back(j);
+  }
+  if (count == 0) return 0;
+  // Compact, renumbering the separatrices that t-junction ends name.
+  std::vector<int> newIndex(n, -1);
+  std::vector<LayoutSeparatrix> kept;
+  for (int i = 0; i < n; ++i)
+    if (!removed[i]) newIndex[i] = int(kept.size()), kept.push_back(std::move(layout.separatrices[i]));
+  for (auto& s : kept) {
+    if (s.path.barrier < 0) continue;
+    s.path.barrier = newIndex[s.path.barrier];
+    if (!s.path.points.empty() && s.path.points.back().kind == PathPoint::Crossing) s.path.points.back().id = s.path.barrier;
+  }
+  layout.separatrices = std::move(kept);
+  layout.tJunctions = 0;
+  layout.borderConnections = 0;
+  for (const auto& s : layout.separatrices) {
+    layout.tJunctions += s.kind == LayoutSeparatrix::TJunction;
+    layout.borderConnections += s.kind == LayoutSeparatrix::Border;
+  }
+  return count;
 }
 
 }  // namespace fcql

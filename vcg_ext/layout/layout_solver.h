@@ -9,6 +9,8 @@
 //    with the layout (a t-junction), the border, or another dangling port. Paths are accepted
 //    shortest first in rounds; a path that meets another path accepted in the same round is
 //    traced again in the next round against the grown layout.
+// 4. Dead ends: separatrices that would leave a slit inside a patch are removed
+//    (removeDeadEnds).
 #pragma once
 
 #include "layout/separatrix_selection.h"
@@ -44,12 +46,21 @@ struct Layout {
   int tJunctions = 0;
   int borderConnections = 0;
   std::vector<int> unresolvedPorts;  ///< dangling ports no propagation could resolve
+  int deadEndsRemoved = 0;        ///< separatrices dropped by removeDeadEnds
   bool ilpTimeLimitHit = false;
   std::vector<std::string> messages; ///< solver notes worth logging
   double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0;
 };
 
 Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params);
+
+/// Removes the separatrices that end at an interior singular vertex reached by no other
+/// separatrix (its other ports unresolved, or a singularity of index 3/4, which has a single
+/// port): each would run into a patch and stop there, a slit that no grid of quads fits. The
+/// singularity then lies inside a patch. Removal cascades to t-junction paths that ended on a
+/// removed separatrix and to singularities left with a single separatrix. Returns how many
+/// were removed; t-junction and border counts are updated. Called by solveLayout (step 4).
+int removeDeadEnds(const GeodesicGraph& graph, Layout& layout);
 
 /// Ports that have a separatrix in `layout` (per port, 1 = used).
 std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout);

@@ -236,6 +236,57 @@ std::uint64_t key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32)
 
 }  // namespace
 
+int addBoundaryCorners(PatchLayout& out, int patch) {
+  PatchReport& rep = out.patches[patch];
+  const int m = int(rep.loop.size());
+  std::map<int, int> timesOnLoop;
+  for (int v : rep.loop) ++timesOnLoop[v];
+  std::vector<double> at(m + 1, 0.0);  // arc length from loop[0] to loop[k]
+  for (int k = 0; k < m; ++k) at[k + 1] = at[k] + (out.positions[rep.loop[(k + 1) % m]] - out.positions[rep.loop[k]]).norm();
+  auto usable = [&](int k) { return !rep.loopCorner[k] && timesOnLoop[rep.loop[k]] == 1; };
+  int added = 0;
+  while (rep.corners < 3) {
+    std::vector<int> corners;
+    for (int k = 0; k < m; ++k)
+      if (rep.loopCorner[k]) corners.push_back(k);
+    // The stretch to split: from corner a to the next corner b (the whole loop from a when
+    // there is at most one corner; from any usable vertex when there is none).
+    int a = -1, b = -1;
+    double best = -1;
+    if (corners.empty()) {
+      for (int k = 0; k < m && a < 0; ++k)
+        if (usable(k)) a = k;
+      if (a < 0) break;
+      rep.loopCorner[a] = 1;
+      out.corner[rep.loop[a]] = 1;
+      ++rep.corners, ++added;
+      continue;
+    }
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const int from = corners[i], to = corners[(i + 1) % corners.size()];
+      double length = to > from ? at[to] - at[from] : at[m] - at[from] + at[to];
+      if (length > best) best = length, a = from, b = to;
+    }
+    // The usable vertex strictly inside the stretch nearest its middle.
+    int split = -1;
+    double bestOffset = 0;
+    for (int step = 1; step < m; ++step) {
+      const int k = (a + step) % m;
+      if (k == b) break;
+      if (!usable(k)) continue;
+      double along = k > a ? at[k] - at[a] : at[m] - at[a] + at[k];
+      double offset = std::abs(along - 0.5 * best);
+      if (split < 0 || offset < bestOffset) split = k, bestOffset = offset;
+    }
+    if (split < 0) break;
+    rep.loopCorner[split] = 1;
+    out.corner[rep.loop[split]] = 1;
+    ++rep.corners, ++added;
+  }
+  out.addedCorners += added;
+  return added;
+}
+
 int PatchLayout::numInvalidPatches() const {
   return int(std::count_if(patches.begin(), patches.end(), [](const PatchReport& p) { return !p.valid; }));
 }
@@ -436,6 +487,10 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
                     std::to_string(rep.boundaryLoops) + " boundary loops)";
     else if (rep.problem.empty() && rep.corners != 4)
       rep.problem = std::to_string(rep.corners) + " corners";
+    if (rep.problem.empty() || !rep.isDisk || rep.corners >= 3) continue;
+    const int added = addBoundaryCorners(out, p);
+    rep.problem = std::to_string(rep.corners - added) + " corners (" + std::to_string(added) +
+                  " added on its boundary to cut it as a " + std::to_string(rep.corners) + "-gon)";
   }
   return out;
 }

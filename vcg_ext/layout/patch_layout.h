@@ -50,6 +50,9 @@ struct PatchLayout {
   std::vector<char> corner;                  ///< per vertex: 1 at a patch corner
   std::vector<PatchReport> patches;
   int numOriginalVertices = 0;
+  /// Corners added on the boundaries of disk patches that had fewer than 3 (see
+  /// addBoundaryCorners in patch_layout.cpp): those patches are then cut as 3-gons.
+  int addedCorners = 0;
 
   int numPatches() const { return int(patches.size()); }
   int numInvalidPatches() const;
@@ -58,6 +61,15 @@ struct PatchLayout {
 };
 
 /// Throws std::runtime_error if the separatrices cannot be embedded (a bug, reported).
+/// Disk patches with fewer than 3 corners get corners added (addBoundaryCorners).
 PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout);
+
+/// A disk patch with fewer than 3 corners (a teardrop closed by one separatrix around a
+/// singularity of index 3/4, a lens between two, or a cap inside a closed loop) has no polygon
+/// to be cut into quads. Boundary vertices of `patch` (on its first loop, met once by it) are
+/// made corners until it has 3: each splits the longest stretch of the boundary between
+/// corners at its middle (by length); the neighbour on that side sees the new corner as a
+/// t-junction. Updates the report, `corner` and addedCorners; returns how many were added.
+int addBoundaryCorners(PatchLayout& layout, int patch);
 
 }  // namespace fcql
