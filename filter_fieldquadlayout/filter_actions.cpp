@@ -70,6 +70,8 @@ void addLayoutFigures(FilterOutcome& o, const LayoutStepResult& r) {
   addInt(o, "border_connections", l.borderConnections);
   addInt(o, "iterations", l.iterations);
   addInt(o, "dangling_ports", long(l.unresolvedPorts.size()));
+  addInt(o, "dead_ends_removed", l.deadEndsRemoved);
+  addInt(o, "added_corners", r.layout.patches.addedCorners);
   addSeconds(o, "time_ilp", l.ilpSeconds);
   addSeconds(o, "time_layout", r.seconds);
 }

@@ -65,7 +65,7 @@ std::vector<std::string> describeLayout(const LayoutResult& r) {
   if (l.ilpTimeLimitHit)
     lines.push_back("Warning: a 0-1 program reached the time limit; the best selection found "
                     "was used");
-  for (const std::string& m : l.messages) lines.push_back("ILP: " + m);
+  for (const std::string& m : l.messages) lines.push_back("Note: " + m);
   lines.push_back("Time: 0-1 programs " + formatSeconds(l.ilpSeconds) + ", solving cycle tracing " +
                   formatSeconds(l.cycleTracingSeconds) + ", propagation " +
                   formatSeconds(l.propagationSeconds) + ", cut into patches " +
