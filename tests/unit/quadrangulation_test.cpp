@@ -562,6 +562,7 @@ TEST(Quadrangulation, DeadEndSeparatrixIsRemovedAndItsPatchStillCut) {
   }
   EXPECT_EQ(removeDeadEnds(*q->graph, q->layout), 1);
   EXPECT_EQ(q->layout.separatrices.size(), 9u);
+  EXPECT_EQ(q->layout.unresolvedPorts.size(), 2u);  // the removed separatrix's two ports
   // No interior singular vertex keeps a single separatrix.
   std::map<int, int> ends;
   for (const auto& s : q->layout.separatrices)

@@ -219,12 +219,22 @@ int removeDeadEnds(const GeodesicGraph& graph, Layout& layout) {
   }
   if (count == 0) return 0;
   // Compact, renumbering the separatrices that t-junction ends name.
+  std::vector<int> removedPorts;
+  for (int i = 0; i < n; ++i)
+    if (removed[i])
+      for (int p : {layout.separatrices[i].portA, layout.separatrices[i].portB})
+        if (p >= 0) removedPorts.push_back(p);
   std::vector<int> newIndex(n, -1);
   std::vector<LayoutSeparatrix> kept;
   for (int i = 0; i < n; ++i)
     if (!removed[i]) newIndex[i] = int(kept.size()), kept.push_back(std::move(layout.separatrices[i]));
+  // The ports of removed separatrices are dangling again.
+  layout.unresolvedPorts.insert(layout.unresolvedPorts.end(), removedPorts.begin(), removedPorts.end());
+  std::sort(layout.unresolvedPorts.begin(), layout.unresolvedPorts.end());
+  layout.unresolvedPorts.erase(std::unique(layout.unresolvedPorts.begin(), layout.unresolvedPorts.end()),
+                               layout.unresolvedPorts.end());
   for (auto& s : kept) {
-    if (s.path.barrier < 0) continue;
+    if (s.path.barrier < 0 || s.path.barrier >= n) continue;
     s.path.barrier = newIndex[s.path.barrier];
     if (!s.path.points.empty() && s.path.points.back().kind == PathPoint::Crossing) s.path.points.back().id = s.path.barrier;
   }

@@ -59,7 +59,8 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
 /// port): each would run into a patch and stop there, a slit that no grid of quads fits. The
 /// singularity then lies inside a patch. Removal cascades to t-junction paths that ended on a
 /// removed separatrix and to singularities left with a single separatrix. Returns how many
-/// were removed; t-junction and border counts are updated. Called by solveLayout (step 4).
+/// were removed; t-junction and border counts are updated and the removed separatrices' ports
+/// join unresolvedPorts. Called by solveLayout (step 4).
 int removeDeadEnds(const GeodesicGraph& graph, Layout& layout);
 
 /// Ports that have a separatrix in `layout` (per port, 1 = used).
