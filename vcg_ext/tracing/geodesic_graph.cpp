@@ -1,11 +1,12 @@
 #include "tracing/geodesic_graph.h"
 
+#include "mesh/worker_threads.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <unordered_map>
 
 namespace fcql {
@@ -63,7 +64,7 @@ public:
       throw std::runtime_error("graph G would have " + std::to_string(slots) +
                                " node slots, more than it can hold (2^30): use a larger phi");
     const int numSlots = int(slots);
-    int threads = g_.params_.threads > 0 ? g_.params_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = workerThreadCount(g_.params_.threads, mesh_.numFaces());
     std::vector<std::vector<BuildArc>> perThread(threads);
     std::atomic<int> nextChunk{0};
     const int chunk = 256;
@@ -76,10 +77,7 @@ public:
         for (int f = begin; f < end; ++f) faceArcs(f, out);
       }
     };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& th : pool) th.join();
+    runOnWorkerThreads(threads, work);
     std::vector<BuildArc> portArcs;
     for (int p = 0; p < int(g_.ports_.size()); ++p) sourceArcs(p, portArcs);
 

@@ -1,11 +1,12 @@
 #include "tracing/separatrix_graph.h"
 
+#include "mesh/worker_threads.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <map>
 #include <numeric>
-#include <thread>
 #include <unordered_map>
 
 namespace fcql {
@@ -68,7 +69,7 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h, int threads)
   const int numBlocks = (n + blockSize - 1) / blockSize;
   std::vector<Block> blocks(numBlocks);
   std::atomic<int> nextBlock{0};
-  auto work = [&]() {
+  auto work = [&](int) {
     std::vector<unsigned char> met(n, 0);  // bit 0: met, bit 1: tangentially
     std::vector<int> others;
     for (int block; (block = nextBlock.fetch_add(1)) < numBlocks;) {
@@ -93,12 +94,7 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h, int threads)
       }
     }
   };
-  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, numBlocks));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  runOnWorkerThreads(workerThreadCount(threads, numBlocks), work);
   h.tangentialPairs.clear();
   h.orthogonalPairs.clear();
   for (const Block& b : blocks) {

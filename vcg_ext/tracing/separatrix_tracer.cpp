@@ -1,5 +1,7 @@
 #include "tracing/separatrix_tracer.h"
 
+#include "mesh/worker_threads.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -9,7 +11,6 @@
 #include <functional>
 #include <limits>
 #include <queue>
-#include <thread>
 
 namespace fcql {
 namespace {
@@ -385,12 +386,11 @@ std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, cons
 std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
                                                     const SearchOptions& options, const ProgressCallback& progress) {
   std::vector<std::vector<TracedPath>> results(ports.size());
-  int threads = graph.parameters().threads > 0 ? graph.parameters().threads
-                                               : int(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min<int>(threads, int(ports.size())));
+  const int threads = workerThreadCount(graph.parameters().threads, int(ports.size()));
   std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
-  auto work = [&](bool reports) {
+  auto work = [&](int thread) {
+    const bool reports = thread == 0;  // only the calling thread reports: callbacks need no locking
     Search search(graph);
     for (;;) {
       std::size_t i = next.fetch_add(1);
@@ -400,10 +400,7 @@ std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, 
       if (reports && progress) progress(finished, int(ports.size()));
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
-  work(true);  // only the calling thread reports, so callbacks need no locking
-  for (auto& th : pool) th.join();
+  runOnWorkerThreads(threads, work);
   if (progress) progress(int(ports.size()), int(ports.size()));
   return results;
 }
