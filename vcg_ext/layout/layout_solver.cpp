@@ -1,6 +1,7 @@
 #include "layout/layout_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -182,12 +183,21 @@ int removeDeadEnds(const GeodesicGraph& graph, Layout& layout) {
   std::vector<char> removed(n, 0);
   // Separatrices ending at each interior singular vertex (both ends of a loop count).
   std::map<int, std::vector<int>> endsAt;
-  auto vertexOf = [&](int port) { return port >= 0 && port < int(ports.size()) ? ports[port].vertex : -1; };
-  for (int i = 0; i < n; ++i) {
-    const auto& s = layout.separatrices[i];
-    for (int v : {vertexOf(s.portA), vertexOf(s.portB)})
-      if (v >= 0 && !mesh.isBorderVertex(v)) endsAt[v].push_back(i);
-  }
+  // The interior singular vertices at the two ends of separatrix i (−1 for none).
+  auto interiorEnds = [&](int i) {
+    std::array<int, 2> ends{};
+    const LayoutSeparatrix& s = layout.separatrices[i];
+    const int endPorts[2] = {s.portA, s.portB};
+    for (int e = 0; e < 2; ++e) {
+      const int p = endPorts[e];
+      const int v = p >= 0 && p < int(ports.size()) ? ports[p].vertex : -1;
+      ends[e] = v >= 0 && !mesh.isBorderVertex(v) ? v : -1;
+    }
+    return ends;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int v : interiorEnds(i))
+      if (v >= 0) endsAt[v].push_back(i);
   // T-junction paths that end on each separatrix: they would dangle without it.
   std::vector<std::vector<int>> endingOn(n);
   for (int i = 0; i < n; ++i) {
@@ -210,9 +220,8 @@ int removeDeadEnds(const GeodesicGraph& graph, Layout& layout) {
     if (removed[i]) continue;
     removed[i] = 1;
     ++count;
-    const auto& s = layout.separatrices[i];
-    for (int v : {vertexOf(s.portA), vertexOf(s.portB)})
-      if (v >= 0 && !mesh.isBorderVertex(v) && liveEnds(v) == 1)
+    for (int v : interiorEnds(i))
+      if (v >= 0 && liveEnds(v) == 1)
         for (int j : endsAt[v])
           if (!removed[j]) stack.push_back(j);
     for (int j : endingOn[i]) stack.push_back(j);

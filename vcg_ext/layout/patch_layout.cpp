@@ -244,27 +244,34 @@ int addBoundaryCorners(PatchLayout& out, int patch) {
   std::vector<double> at(m + 1, 0.0);  // arc length from loop[0] to loop[k]
   for (int k = 0; k < m; ++k) at[k + 1] = at[k] + (out.positions[rep.loop[(k + 1) % m]] - out.positions[rep.loop[k]]).norm();
   auto usable = [&](int k) { return !rep.loopCorner[k] && timesOnLoop[rep.loop[k]] == 1; };
+  auto lengthFrom = [&](int from, int to) {  // along the loop, forwards, wrapping round
+    return to > from ? at[to] - at[from] : at[m] - at[from] + at[to];
+  };
   int added = 0;
+  auto makeCorner = [&](int k) {
+    rep.loopCorner[k] = 1;
+    out.corner[rep.loop[k]] = 1;
+    ++rep.corners, ++added;
+  };
   while (rep.corners < 3) {
     std::vector<int> corners;
     for (int k = 0; k < m; ++k)
       if (rep.loopCorner[k]) corners.push_back(k);
-    // The stretch to split: from corner a to the next corner b (the whole loop from a when
-    // there is at most one corner; from any usable vertex when there is none).
-    int a = -1, b = -1;
-    double best = -1;
-    if (corners.empty()) {
-      for (int k = 0; k < m && a < 0; ++k)
-        if (usable(k)) a = k;
-      if (a < 0) break;
-      rep.loopCorner[a] = 1;
-      out.corner[rep.loop[a]] = 1;
-      ++rep.corners, ++added;
+    if (corners.empty()) {  // a cap: start from any usable vertex
+      int first = -1;
+      for (int k = 0; k < m && first < 0; ++k)
+        if (usable(k)) first = k;
+      if (first < 0) break;
+      makeCorner(first);
       continue;
     }
+    // The longest stretch from a corner a to the next corner b (with one corner: the whole
+    // loop from a back to a).
+    int a = -1, b = -1;
+    double best = -1;
     for (std::size_t i = 0; i < corners.size(); ++i) {
       const int from = corners[i], to = corners[(i + 1) % corners.size()];
-      double length = to > from ? at[to] - at[from] : at[m] - at[from] + at[to];
+      const double length = lengthFrom(from, to);
       if (length > best) best = length, a = from, b = to;
     }
     // The usable vertex strictly inside the stretch nearest its middle.
@@ -274,14 +281,11 @@ int addBoundaryCorners(PatchLayout& out, int patch) {
       const int k = (a + step) % m;
       if (k == b) break;
       if (!usable(k)) continue;
-      double along = k > a ? at[k] - at[a] : at[m] - at[a] + at[k];
-      double offset = std::abs(along - 0.5 * best);
+      const double offset = std::abs(lengthFrom(a, k) - 0.5 * best);
       if (split < 0 || offset < bestOffset) split = k, bestOffset = offset;
     }
     if (split < 0) break;
-    rep.loopCorner[split] = 1;
-    out.corner[rep.loop[split]] = 1;
-    ++rep.corners, ++added;
+    makeCorner(split);
   }
   out.addedCorners += added;
   return added;
