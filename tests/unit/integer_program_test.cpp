@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <vector>
 
 using namespace fcql;
 using Sense = IntegerProgram::Sense;
@@ -78,4 +80,43 @@ TEST(IntegerProgram, TimeLimitIsHonoured) {
   } else {
     EXPECT_FALSE(r.message.empty());
   }
+}
+
+TEST(IntegerProgram, RoundingTheRelaxationGivesAFeasibleIntegerSolution) {
+  // min Σ |x_i − ideal_i| with x integer in [1, 50] and x0 + x1 = x2, x2 + x3 = x4 + x5: the
+  // relaxation sits on the fractional ideals; the rounded solution must be integral, satisfy
+  // both equalities, and cost no more than rounding each ideal on its own would (6 · 0.5).
+  const std::vector<double> ideal = {3.4, 5.5, 8.6, 2.5, 4.45, 6.7};
+  IntegerProgram ip;
+  std::vector<int> x;
+  for (double v : ideal) {
+    const int xi = ip.addVariable(1, 50, true);
+    const int t = ip.addVariable(0, 1e9, false, 1);
+    ip.addConstraint({{t, 1}, {xi, -1}}, Sense::GreaterEqual, -v);
+    ip.addConstraint({{t, 1}, {xi, 1}}, Sense::GreaterEqual, v);
+    x.push_back(xi);
+  }
+  ip.addConstraint({{x[0], 1}, {x[1], 1}, {x[2], -1}}, Sense::Equal, 0);
+  ip.addConstraint({{x[2], 1}, {x[3], 1}, {x[4], -1}, {x[5], -1}}, Sense::Equal, 0);
+  const auto r = ip.solveByRounding(5);
+  ASSERT_TRUE(r.hasSolution()) << r.message;
+  EXPECT_EQ(r.status, IntegerProgram::Status::TimeLimit) << "not proven optimal";
+  double cost = 0;
+  for (std::size_t i = 0; i < ideal.size(); ++i) {
+    EXPECT_EQ(r.values[x[i]], std::round(r.values[x[i]]));
+    cost += std::abs(r.values[x[i]] - ideal[i]);
+  }
+  EXPECT_EQ(r.values[x[0]] + r.values[x[1]], r.values[x[2]]);
+  EXPECT_EQ(r.values[x[2]] + r.values[x[3]], r.values[x[4]] + r.values[x[5]]);
+  EXPECT_LE(cost, 3.0 + 1e-9);
+  EXPECT_NEAR(r.objective, cost, 1e-6);
+
+  // An equality no integers satisfy (2y = 3 with y in [0, 5]) is reported, not rounded away.
+  IntegerProgram odd;
+  const int y = odd.addVariable(0, 5, true, 1);
+  odd.addConstraint({{y, 2}}, Sense::Equal, 3);
+  const auto bad = odd.solveByRounding(5);
+  EXPECT_FALSE(bad.hasSolution());
+  EXPECT_EQ(bad.status, IntegerProgram::Status::Infeasible);
+  EXPECT_FALSE(bad.message.empty());
 }

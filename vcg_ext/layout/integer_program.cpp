@@ -2,6 +2,7 @@
 
 #include <lpsolve/lp_lib.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -36,22 +37,18 @@ const char* toString(IntegerProgram::Status status) {
   }
 }
 
-IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
-  Result result;
+using LpModel = std::unique_ptr<lprec, void (*)(lprec*)>;
+
+/// The program as an lp_solve model (integer flags dropped when `relaxed`); null with
+/// `message` set if lp_solve refuses it.
+LpModel IntegerProgram::buildModel(bool relaxed, std::string& message) const {
   const int n = numVariables();
-  if (n == 0) {
-    result.status = Status::Optimal;
-    result.message = "empty program";
-    return result;
-  }
-  auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<lprec, void (*)(lprec*)> lp(make_lp(0, n), delete_lp);
+  LpModel lp(make_lp(0, n), delete_lp);
   if (!lp) {
-    result.message = "lp_solve could not create the model (out of memory?)";
-    return result;
+    message = "lp_solve could not create the model (out of memory?)";
+    return lp;
   }
   set_verbose(lp.get(), NEUTRAL);
-  std::vector<double> row(n + 1, 0.0);
   std::vector<int> cols;
   std::vector<double> vals;
   // Objective and bounds.
@@ -65,7 +62,7 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   for (int j = 0; j < n; ++j) {
     set_bounds(lp.get(), j + 1, std::isinf(lower_[j]) ? -get_infinite(lp.get()) : lower_[j],
                std::isinf(upper_[j]) ? get_infinite(lp.get()) : upper_[j]);
-    if (integer_[j]) set_int(lp.get(), j + 1, TRUE);
+    if (integer_[j] && !relaxed) set_int(lp.get(), j + 1, TRUE);
   }
   set_add_rowmode(lp.get(), TRUE);
   for (const Row& r : rows_) {
@@ -77,13 +74,27 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
     }
     int type = r.sense == Sense::LessEqual ? LE : (r.sense == Sense::GreaterEqual ? GE : EQ);
     if (!add_constraintex(lp.get(), int(cols.size()), vals.data(), cols.data(), type, r.rhs)) {
-      result.message = "lp_solve rejected a constraint";
-      return result;
+      message = "lp_solve rejected a constraint";
+      return LpModel(nullptr, delete_lp);
     }
   }
   set_add_rowmode(lp.get(), FALSE);
-  set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
   set_presolve(lp.get(), PRESOLVE_NONE, get_presolveloops(lp.get()));
+  return lp;
+}
+
+IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
+  Result result;
+  const int n = numVariables();
+  if (n == 0) {
+    result.status = Status::Optimal;
+    result.message = "empty program";
+    return result;
+  }
+  auto start = std::chrono::steady_clock::now();
+  LpModel lp = buildModel(false, result.message);
+  if (!lp) return result;
+  set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
   set_mip_gap(lp.get(), FALSE, relativeGap_);
   int ret = ::solve(lp.get());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -135,6 +146,86 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
       result.message = "lp_solve failed with code " + std::to_string(ret);
   }
   return result;
+}
+
+IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) const {
+  Result result;
+  const int n = numVariables();
+  if (n == 0) {
+    result.status = Status::Optimal;
+    result.message = "empty program";
+    return result;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  LpModel lp = buildModel(true, result.message);
+  if (!lp) return result;
+  std::vector<char> fixed(n, 0);
+  std::vector<double> x(n);
+  // Per integer variable: the constraints it shares with other integer variables.
+  std::vector<std::vector<int>> coupling(n);
+  for (int row = 0; row < numConstraints(); ++row) {
+    int integers = 0;
+    for (const auto& t : rows_[row].terms) integers += integer_[t.first] ? 1 : 0;
+    if (integers < 2) continue;
+    for (const auto& t : rows_[row].terms)
+      if (integer_[t.first]) coupling[t.first].push_back(row);
+  }
+  std::vector<int> rowBatch(numConstraints(), 0);
+  int batch = 0;
+  for (int round = 1;; ++round) {
+    // Each solve may take the whole limit: once it is spent, everything left is rounded at
+    // once and one more solve finishes the job (at most about twice the limit in all).
+    set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
+    const int ret = ::solve(lp.get());  // after the first round, from the last basis
+    if (ret != OPTIMAL && ret != SUBOPTIMAL && ret != PRESOLVED) {
+      result.status = ret == INFEASIBLE ? Status::Infeasible : Status::Failed;
+      result.message = ret == INFEASIBLE ? "the LP relaxation has no solution with the values rounded so far"
+                                         : "lp_solve failed on the LP relaxation (code " + std::to_string(ret) + ")";
+      result.seconds = elapsed();
+      return result;
+    }
+    get_variables(lp.get(), x.data());
+    // Values already integral are kept; the others are rounded, nearest to an integer first
+    // (all of them once the time is up), and the relaxation solved again.
+    std::vector<std::pair<double, int>> fractional;
+    for (int j = 0; j < n; ++j) {
+      if (!integer_[j] || fixed[j]) continue;
+      const double r = std::round(x[j]);
+      if (std::abs(x[j] - r) <= 1e-6) {
+        fixed[j] = 1;
+        set_bounds(lp.get(), j + 1, r, r);
+      } else {
+        fractional.push_back({std::abs(x[j] - r), j});
+      }
+    }
+    if (fractional.empty()) {
+      result.values = x;
+      for (int j = 0; j < n; ++j)
+        if (integer_[j]) result.values[j] = std::round(x[j]);
+      result.objective = get_objective(lp.get());
+      result.status = Status::TimeLimit;
+      result.message = "the LP relaxation rounded in " + std::to_string(round) +
+                       " rounds (a feasible solution, not proven optimal)";
+      result.seconds = elapsed();
+      return result;
+    }
+    std::sort(fractional.begin(), fractional.end());
+    // Two variables of one constraint are not rounded in the same round: the relaxation,
+    // solved again, moves the others of the constraint to follow the first.
+    const bool allNow = elapsed() >= timeLimitSeconds;
+    ++batch;
+    for (const auto& f : fractional) {
+      const int j = f.second;
+      bool free = true;
+      for (int row : coupling[j]) free = free && rowBatch[row] != batch;
+      if (!free && !allNow) continue;
+      for (int row : coupling[j]) rowBatch[row] = batch;
+      const double r = std::clamp(std::round(x[j]), std::ceil(lower_[j] - 1e-9), std::floor(upper_[j] + 1e-9));
+      fixed[j] = 1;
+      set_bounds(lp.get(), j + 1, r, r);
+    }
+  }
 }
 
 }  // namespace fcql

@@ -4,9 +4,12 @@
 // a time limit; when it is hit the best feasible solution found so far is returned, flagged.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
+
+struct _lprec;
 
 namespace fcql {
 
@@ -44,8 +47,17 @@ public:
 
   /// Solves with lp_solve. `timeLimitSeconds` ≥ 1 (lp_solve's resolution is one second).
   Result solve(double timeLimitSeconds) const;
+  /// A feasible solution without branch and bound, for programs lp_solve cannot settle in
+  /// time: the LP relaxation is solved, its integer variables with integral values are fixed
+  /// there and the others rounded, nearest to an integer first and never two of one
+  /// constraint at once, and so on until every integer variable is fixed (status TimeLimit: not proven optimal). Rounding can make
+  /// equality constraints unsatisfiable: status Infeasible then. Takes up to about twice the
+  /// time limit (each LP solve may use all of it; once it is spent, all is rounded at once).
+  Result solveByRounding(double timeLimitSeconds) const;
 
 private:
+  std::unique_ptr<_lprec, void (*)(_lprec*)> buildModel(bool relaxed, std::string& message) const;
+
   struct Row {
     std::vector<std::pair<int, double>> terms;
     Sense sense;

@@ -4,7 +4,8 @@
 // sense (heavily weighted) where one does. Segments forced equal (single-segment opposite
 // sides) share one count (a chord class); the program then splits into independent parts,
 // classes linked by the remaining equalities: a class in none takes its best rounding
-// directly, each other part is solved with lp_solve on its own.
+// directly, each other part is solved with lp_solve on its own (branch and bound, or, where
+// that finds no solution within the time limit, its LP relaxation rounded).
 #pragma once
 
 #include "layout/integer_program.h"
@@ -23,13 +24,15 @@ struct SideLengths {
   double seconds = 0;
   int parts = 0;     ///< independent parts of the program
   int programs = 0;  ///< parts that needed lp_solve (the others are single classes)
+  int roundedParts = 0;  ///< of those, parts solved by rounding the LP relaxation
 
   /// Subdivisions along side k of patch p.
   int sideLength(const PatchGraph& g, int p, int k) const;
 };
 
-/// Throws std::runtime_error if lp_solve finds no solution. Patches with forceEqual get hard
-/// equalities; if that makes the program infeasible it is solved again without them.
+/// Throws std::runtime_error if lp_solve fails even on the LP relaxation. Patches with
+/// forceEqual get hard equalities; if that makes the program infeasible it is solved again
+/// without them.
 SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds);
 
 }  // namespace fcql
