@@ -67,6 +67,13 @@ ClosestPointIndex::ClosestPointIndex(std::vector<Vec3> positions, std::vector<st
   cellTriangles_.resize(cellStart_.back());
   std::vector<int> fill(cellStart_.begin(), cellStart_.end() - 1);
   for (int i = 0; i < int(triangles_.size()); ++i) forCells(triangles_[i], [&](int c) { cellTriangles_[fill[c]++] = i; });
+  boxLow_.resize(triangles_.size());
+  boxHigh_.resize(triangles_.size());
+  for (std::size_t i = 0; i < triangles_.size(); ++i) {
+    const auto& t = triangles_[i];
+    boxLow_[i] = positions_[t[0]].cwiseMin(positions_[t[1]]).cwiseMin(positions_[t[2]]);
+    boxHigh_[i] = positions_[t[0]].cwiseMax(positions_[t[1]]).cwiseMax(positions_[t[2]]);
+  }
 }
 
 std::array<int, 3> ClosestPointIndex::cellOf(const Vec3& p) const {
@@ -87,6 +94,9 @@ ClosestPoint ClosestPointIndex::closest(const Vec3& p) const {
     const int cell = cellIndex(x, y, z);
     for (int i = cellStart_[cell]; i < cellStart_[cell + 1]; ++i) {
       const int t = cellTriangles_[i];
+      // Its bounding box no nearer than the best so far: the triangle cannot be nearer.
+      const Vec3 outside = (boxLow_[t] - p).cwiseMax(p - boxHigh_[t]).cwiseMax(Vec3::Zero());
+      if (outside.squaredNorm() >= best.distance * best.distance) continue;
       const auto& tri = triangles_[t];
       Vec3 q = closestPointOnTriangle(p, positions_[tri[0]], positions_[tri[1]], positions_[tri[2]]);
       double d = (q - p).norm();
@@ -97,10 +107,20 @@ ClosestPoint ClosestPointIndex::closest(const Vec3& p) const {
       }
     }
   };
+  // Distance from p to any cell of shell r or beyond: such a cell is r steps from p's cell
+  // along some axis, so it lies beyond the face of the box of shells < r on that side (a side
+  // where the grid still has cells). Measured from p itself, not from the edge of its cell: a
+  // point near the surface usually finds its nearest triangle in its own cell and stops there.
+  auto beyond = [&](int r) {
+    double gap = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      if (c[k] - r >= 0) gap = std::min(gap, p[k] - (origin_[k] + (c[k] - r + 1) * cell_));
+      if (c[k] + r < dims_[k]) gap = std::min(gap, origin_[k] + (c[k] + r) * cell_ - p[k]);
+    }
+    return gap;
+  };
   for (int r = 0; r <= maxRing; ++r) {
-    // Every point of a cell in shell r + 1 or beyond is at least r cells away from p's cell,
-    // hence (p inside the grid, or projected onto it) at least r·cell from p.
-    if (best.triangle >= 0 && best.distance <= (r - 1) * cell_) break;
+    if (best.triangle >= 0 && best.distance <= beyond(r)) break;
     for (int z = c[2] - r; z <= c[2] + r; ++z) {
       if (z < 0 || z >= dims_[2]) continue;
       for (int y = c[1] - r; y <= c[1] + r; ++y) {

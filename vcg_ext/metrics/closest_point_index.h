@@ -44,6 +44,7 @@ private:
   std::array<int, 3> dims_{{1, 1, 1}};
   std::vector<int> cellStart_;  ///< CSR: triangles of cell c are cellTriangles_[cellStart_[c] .. cellStart_[c+1])
   std::vector<int> cellTriangles_;
+  std::vector<Vec3> boxLow_, boxHigh_;  ///< per triangle: its bounding box
 };
 
 }  // namespace fcql

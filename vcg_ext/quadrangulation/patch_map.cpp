@@ -92,16 +92,78 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
   for (int i = 0; i < ni; ++i) uv_[interiorWedge[i]] = Vec2(uv(i, 0), uv(i, 1));
 }
 
+void PatchMap::indexTriangles() const {
+  // The triangles' images, once, and a grid over their bounding box listing each triangle in
+  // the cells its bounding box covers (about one triangle per cell): a query looks at the few
+  // triangles of its cell instead of all of the patch's.
+  const int n = int(triangles_.size());
+  corners_.resize(n);
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 3; ++c) {
+      corners_[k][c] = uv_.at(wedge(triangles_[k], c));
+      lo = lo.cwiseMin(corners_[k][c]);
+      hi = hi.cwiseMax(corners_[k][c]);
+    }
+  indexed_ = true;
+  if (n == 0 || !(hi.x() >= lo.x()) || !(hi.y() >= lo.y())) return;
+  gridLow_ = lo;
+  const int side = std::clamp(int(std::sqrt(double(n))), 1, 1024);
+  gridN_ = side;
+  gridStep_ = Vec2(std::max(hi.x() - lo.x(), 1e-12) / side, std::max(hi.y() - lo.y(), 1e-12) / side);
+  std::vector<std::vector<int>> cells(side * side);
+  for (int k = 0; k < n; ++k) {
+    Vec2 a = corners_[k][0].cwiseMin(corners_[k][1]).cwiseMin(corners_[k][2]);
+    Vec2 b = corners_[k][0].cwiseMax(corners_[k][1]).cwiseMax(corners_[k][2]);
+    const int x0 = cellCoordinate(a.x(), 0), x1 = cellCoordinate(b.x(), 0);
+    const int y0 = cellCoordinate(a.y(), 1), y1 = cellCoordinate(b.y(), 1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) cells[y * side + x].push_back(k);
+  }
+  cellBegin_.assign(1, 0);
+  for (const auto& c : cells) {
+    cellTriangles_.insert(cellTriangles_.end(), c.begin(), c.end());
+    cellBegin_.push_back(int(cellTriangles_.size()));
+  }
+}
+
+int PatchMap::cellCoordinate(double value, int axis) const {
+  const double t = std::floor((value - gridLow_[axis]) / gridStep_[axis]);
+  if (!(t >= 0)) return 0;
+  return t >= gridN_ ? gridN_ - 1 : int(t);
+}
+
 Vec3 PatchMap::pointAt(const Vec2& x) const {
+  if (!indexed_) indexTriangles();
   int best = -1;
   double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
-  for (int t : triangles_) {
-    const Vec2 &A = uv_.at(wedge(t, 0)), &B = uv_.at(wedge(t, 1)), &C = uv_.at(wedge(t, 2));
-    double area = cross2(B - A, C - A);
-    if (std::abs(area) < 1e-300) continue;
-    double l0 = cross2(B - x, C - x) / area, l1 = cross2(C - x, A - x) / area, l2 = 1 - l0 - l1;
+  // Barycentric coordinates of x in triangle k (of triangles_); false if it is degenerate.
+  auto locate = [&](int k, double& l0, double& l1, double& l2) {
+    const Vec2 &A = corners_[k][0], &B = corners_[k][1], &C = corners_[k][2];
+    const double area = cross2(B - A, C - A);
+    if (std::abs(area) < 1e-300) return false;
+    l0 = cross2(B - x, C - x) / area, l1 = cross2(C - x, A - x) / area, l2 = 1 - l0 - l1;
+    return true;
+  };
+  // A triangle holding x holds it in its bounding box, so it is listed in x's cell, where
+  // triangles are in the patch's order: the first holding x is the one a scan of all finds.
+  if (gridN_ > 0 && x.x() >= gridLow_.x() && x.y() >= gridLow_.y() && x.x() <= gridLow_.x() + gridN_ * gridStep_.x() &&
+      x.y() <= gridLow_.y() + gridN_ * gridStep_.y()) {
+    const int cell = cellCoordinate(x.y(), 1) * gridN_ + cellCoordinate(x.x(), 0);
+    for (int i = cellBegin_[cell]; i < cellBegin_[cell + 1]; ++i) {
+      double l0, l1, l2;
+      const int k = cellTriangles_[i];
+      if (!locate(k, l0, l1, l2) || std::min({l0, l1, l2}) < 0) continue;
+      const auto& tri = layout_.triangles[triangles_[k]];
+      return l0 * layout_.positions[tri[0]] + l1 * layout_.positions[tri[1]] + l2 * layout_.positions[tri[2]];
+    }
+  }
+  // Outside every triangle (or on none, by rounding): the scan finds the nearest.
+  for (int k = 0; k < int(triangles_.size()); ++k) {
+    double l0, l1, l2;
+    if (!locate(k, l0, l1, l2)) continue;
     double mn = std::min({l0, l1, l2});
-    if (mn > bestMin) bestMin = mn, best = t, b0 = l0, b1 = l1, b2 = l2;
+    if (mn > bestMin) bestMin = mn, best = triangles_[k], b0 = l0, b1 = l1, b2 = l2;
     if (mn >= 0) break;
   }
   if (best < 0) throw std::runtime_error("patch " + std::to_string(patch_) + ": its map has no usable triangle");

@@ -5,6 +5,7 @@
 
 #include "layout/patch_layout.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <unordered_map>
@@ -32,6 +33,9 @@ public:
 
 private:
   int wedge(int t, int c) const;
+  void indexTriangles() const;
+  int cellCoordinate(double value, int axis) const;
+
   const PatchLayout& layout_;
   int patch_;
   std::vector<int> triangles_;
@@ -39,6 +43,13 @@ private:
   mutable std::vector<int> parent_;
   mutable int outside_ = 0;
   std::unordered_map<int, Vec2> uv_;
+  // Built by the first pointAt(): per triangle (in triangles_' order) its corners' images, and
+  // a grid of gridN_ × gridN_ cells over them listing the triangles whose box meets each cell.
+  mutable bool indexed_ = false;
+  mutable std::vector<std::array<Vec2, 3>> corners_;
+  mutable Vec2 gridLow_ = Vec2::Zero(), gridStep_ = Vec2::Ones();
+  mutable int gridN_ = 0;
+  mutable std::vector<int> cellBegin_, cellTriangles_;
 };
 
 }  // namespace fcql
