@@ -183,21 +183,27 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double limit = std::max(1.0, timeLimitSeconds - elapsed);
     std::map<int, int> variableOf;
-    // Branch and bound first. Where it finds nothing in time (the dragon's layout has a part
-    // of 800 classes tied by 500 equalities), the LP relaxation is rounded instead. Forced
-    // equalities that cannot all hold are made soft: the patches that then disagree are split
-    // once more (zero chains).
-    const IntegerProgram forced = componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, true, variableOf);
-    IntegerProgram::Result r = forced.solve(limit);
+    // Branch and bound first; where it finds nothing in time (the dragon's layout has a part
+    // of 800 classes tied by 500 equalities), the LP relaxation rounded. Forced equalities
+    // that cannot all hold are made soft: the patches that then disagree are split once more
+    // (zero chains).
     bool rounded = false;
-    if (!r.hasSolution() && r.status == IntegerProgram::Status::Failed) {
-      r = forced.solveByRounding(limit);
-      rounded = true;
-    }
+    // Branch and bound stopped by the time limit may keep a poor solution (in the soft
+    // program, mismatches it did not need): the rounded relaxation is tried too, the better kept.
+    auto attempt = [&](const IntegerProgram& ip) {
+      IntegerProgram::Result best = ip.solve(limit);
+      if (best.status == IntegerProgram::Status::Optimal || best.status == IntegerProgram::Status::Infeasible) return best;
+      IntegerProgram::Result other = ip.solveByRounding(limit);
+      if (other.hasSolution() && (!best.hasSolution() || other.objective < best.objective - 1e-9)) {
+        best = std::move(other);
+        rounded = true;
+      }
+      return best;
+    };
+    IntegerProgram::Result r = attempt(componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, true, variableOf));
     if (!r.hasSolution()) {
-      const IntegerProgram soft = componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, false, variableOf);
-      if (!rounded) r = soft.solve(limit);
-      if (!r.hasSolution()) r = soft.solveByRounding(limit), rounded = true;
+      rounded = false;
+      r = attempt(componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, false, variableOf));
     }
     if (rounded) ++out.roundedParts;
     if (!r.hasSolution()) throw std::runtime_error("side lengths: " + r.message);
