@@ -165,27 +165,43 @@ done
   those stages here (plus the cut into patches), *total* is the whole `fcql run` with the field,
   the quad mesh, its measurements and the output files. The last column divides the paper's
   time by ours. The tracing (a Dijkstra search from every port until k sinks are reached)
-  dominates where k = 30. The issue's target, 10× below the paper's time, is not met: see the
-  ratios in the table (rockerarm's comparison is also unfair the other way: our rockerarm has
-  20K faces, the paper's 70K). Totals vary by 10–25% from run to run on this machine (a
-  shared virtual machine: the bunny's total was 6.6 s in one run and 8.4 s in another).
-- **Quality**: every finished mesh is within 1% of the diagonal (the quad stage samples again
-  with smaller quads where it is not). Misalignment is high on the open surfaces lilium and
-  aqua_center: their long strips of patches along the borders are mapped with their boundaries
-  fixed by arc length, which shears the grid when the two long sides of a strip are not
-  parallel; elsewhere 17–37% of the quads are more than π/16 off the field, against the
-  paper's 2–9%. A few quads stay nearly flat or just folded (scaled Jacobian just below 0 on
-  some meshes).
+  dominates where k = 30. The issue's target, 10× below the paper's time, is met on rockerarm
+  only (whose comparison is unfair the other way: our rockerarm has 20K faces, the paper's
+  70K); bunny and fertility are 4–6× below on the layout, 3–5× on the whole run. Totals vary
+  by 10–25% from run to run on this machine (a shared virtual machine: the bunny's total was
+  5.5 s in one run and 6.9 s in another the same hour).
+- **Quality**: every finished mesh but the dragon's is within 1% of the diagonal (the quad
+  stage samples again with smaller quads where it is not). Misalignment is high on the open
+  surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
+  with their boundaries fixed by arc length, which shears the grid when the two long sides of a
+  strip are not parallel; elsewhere 17–39% of the quads are more than π/16 off the field,
+  against the paper's 2–9%. A few quads stay nearly flat or just folded (scaled Jacobian just
+  below 0 on some meshes). *invalid* counts patches with other than 4 corners, which the quad
+  stage cuts into 4-sided parts: camelhead's 6-corner patch and lilium's 5-corner one hold
+  ports no separatrix could leave (`layout.unresolved_ports`). On camelhead both ports lead
+  into a pocket of graph G whose every path ends at nodes without arcs (their direction, carried
+  into the next triangle, points back across the edge they entered by, so no auxiliary point
+  lies within 45° of it): the 27 and 22 nodes such a port reaches hold no sink, border or
+  separatrix to stop on. On lilium the port's paths all meet an existing separatrix
+  tangentially before anything else (without the barriers its search reaches the border). The
+  dragon's 30 are its 2 teardrops (cut as 3-gons, below) and 28 patches with 5 corners.
 - **Dragon**: its shipped field has 795 singularities, among them 2 of index 3/4 (one
   separatrix each), 20 of index 1/2 and 11 of index −1/2; the paper's dragon has 343. A 3/4
   singularity's only separatrix used to end inside a patch (a slit, which no grid fits): the
-  layout now removes such dead ends (`layout.dead_ends_removed`), the singularity lies inside
-  a patch with one corner, which gets two corners added on its boundary and is cut as a 3-gon
-  (`layout.added_corners`). The layout is then complete (3, 4 and 5 corners, no slit), but
-  its first 0-1 program (21K candidates, one independent part) runs into the 60 s limit, and
-  the side lengths of its 4700 patches, whose largest part ties about 1000 chord classes by
-  t-junction equalities, take lp_solve far longer than the bench's limit (several minutes per
-  round of zero-chain splits). The row gives that limit as the reason.
+  layout removes such dead ends (`layout.dead_ends_removed`), the singularity lies inside a
+  patch with one corner, which gets two corners added on its boundary and is cut as a 3-gon
+  (`layout.added_corners`). Its first 0-1 program (21K candidates, one independent part) runs
+  into the 60 s limit (lp_solve's best selection by then is kept), and its 322 t-junctions tie 800 chord classes by 500 side equalities that no positive
+  integers satisfy (zero chains): 69 patches are split over the rounds. The side-length
+  programs now take seconds (one cost variable per chord class instead of one per segment: the
+  largest part's relaxation is proved infeasible in 0.4 s instead of 19 s; a part branch and
+  bound cannot settle in time is solved by rounding its LP relaxation), and the dragon now
+  gets its quad mesh: 81K quads, but 1.2% from the surface after the 4 finer passes allowed
+  and with folded quads (scaled Jacobian down to −0.61) around the split patches. Its figures
+  change from run to run, as lp_solve's selection at the time limit does (another run: 85K
+  quads, 1.02%, −0.57).
+  With `--ilp-time-limit 5` the layout differs (5288 patches, 481 t-junctions) and about 50
+  patches still disagree after each of the 8 rounds of splits: the run stops with that reason.
 
 ## Speed: profile and changes
 
@@ -217,7 +233,41 @@ cache, costs the same per relaxation: the search is bound by its own steps (2.2 
 settled node, half the pops stale), not by memory. Transparent huge pages for the arcs and
 node states, and ordering the searches by direction and place, changed nothing measurable and
 were not kept. Graph H's crossing classification now runs on both threads with a chord test
-without `fmod` (same candidates and pairs, byte for byte).
+without `fmod` (same candidates and pairs, byte for byte). On a closer look (`perf annotate`,
+one thread) the stalls are on three loads: the first arc of each settled node (26% of the
+loop), the target's distance (10%) and the arc range (7%), all from the L3 cache, which holds
+the quarter of the graph a search walks (the kitten, whose whole graph fits, costs the same).
+
+Tried and not kept this time: A* for the tracing, the bound being the Euclidean distance from
+a node's triangle to the nearest singular vertex with an allowed sink not yet found
+(consistent, since an arc weighs at least its length; it grows as sinks are found, and
+entries pushed under a smaller bound are pushed again when popped). It settled only 10% fewer
+nodes on the bunny (26.6M against 29.3M): the anisotropic weights make field-coherent paths
+far longer than straight lines, so the bound is weak, and it cost more than it saved (tracing
+10.1 s against 8.8 s, one thread). Prefetching the data of the next nodes to be popped: the
+radix heap rarely knows them in advance (its lowest bucket holds only keys equal to the last
+one popped): 6.6 against 7.0 s, within this machine's noise.
+
+The quad stage and the measurements were the next cost. The patch sampling found the triangle
+under each grid point by scanning all of the patch's triangles through hash lookups (18% of
+joint's whole run); a uniform grid over the patch's image in the rectangle now gives the few
+candidates (the first in patch order, as the scan found). The closest-point queries (the
+smoothing's reprojection, the distance check, the measurements) stopped only once the best
+was nearer than the visited shells measured from the edge of the query's cell; measured from
+the query point itself, most stop in their own cell, and triangles whose bounding box is
+farther than the best are skipped. The same quad meshes, byte for byte. Before (commit
+092fa17) and after, in one run (joint's quads differ: the side-length program's new form
+makes lp_solve return another solution within its 1% gap):
+
+| mesh | quad stage before → after | measurements | total before → after |
+|---|---:|---:|---:|
+| bunny (α 15, k 30) | 1.49 → 0.49 s (3.0×) | 0.64 → 0.09 s | 8.90 → 6.92 s (1.3×) |
+| fertility (α 30, k 30) | 3.03 → 0.89 s (3.4×) | 0.64 → 0.10 s | 10.65 → 7.05 s (1.5×) |
+| rockerarm (α 30, k 30) | 3.51 → 1.12 s (3.1×) | 0.38 → 0.06 s | 8.70 → 5.75 s (1.5×) |
+| joint (α 20, k 10) | 6.52 → 2.26 s (2.9×) | 0.51 → 0.13 s | 9.56 → 4.98 s (1.9×) |
+| fandisk (α 20, k 10) | 1.23 → 0.49 s (2.5×) | 0.25 → 0.04 s | 2.61 → 1.58 s (1.7×) |
+
+The unit and end-to-end tests (`ctest`) fell from about 4 minutes to 40 s with them.
 NOTES
   if [ ${#pictures[@]} -gt 0 ]; then
     echo
