@@ -591,6 +591,36 @@ TEST(Quadrangulation, DeadEndSeparatrixIsRemovedAndItsPatchStillCut) {
   EXPECT_GT(quality.meanScaledJacobian, 0.9);
 }
 
+TEST(Quadrangulation, UnresolvedPortIsNoCornerOfThePatchItOpensInto) {
+  // The rounded box's layout (a cube: 8 singularities of index 1/4, 3 ports each, 12
+  // separatrices, 6 patches) with one separatrix taken away: its two ends keep two
+  // separatrices each, 180° apart on the side of the merged patch, whose boundary runs straight
+  // on through them. The merged patch has the 4 corners of a 2×1 rectangle, not 6; the others
+  // keep theirs, and the quad stage cuts it like any 4-sided patch.
+  auto q = layoutOf(makeRoundedBox());
+  ASSERT_EQ(q->layout.separatrices.size(), 12u);
+  ASSERT_EQ(q->patches.numPatches(), 6);
+  const LayoutSeparatrix removed = q->layout.separatrices[0];
+  q->layout.separatrices.erase(q->layout.separatrices.begin());
+  q->layout.unresolvedPorts = {removed.portA, removed.portB};
+  q->patches = buildPatchLayout(*q->graph, q->layout);
+  ASSERT_EQ(q->patches.numPatches(), 5);
+  for (const auto& p : q->patches.patches) {
+    EXPECT_TRUE(p.valid) << p.problem;
+    EXPECT_EQ(p.corners, 4) << p.problem;
+  }
+  // The two ends are still corners, of the patches beyond the remaining separatrices.
+  for (int port : {removed.portA, removed.portB}) EXPECT_TRUE(q->patches.corner[q->graph->ports()[port].vertex]);
+  QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.05);
+  EXPECT_TRUE(r.report.manifold) << r.report.problem;
+  EXPECT_EQ(r.report.eulerCharacteristic, 2);
+  EXPECT_EQ(r.polygonPatches, 0) << "no patch needed cutting as an n-gon";
+  const ClosestPointIndex index(q->mesh);
+  const QuadQuality quality = measureQuadQuality(r.mesh, q->mesh, q->field, index);
+  EXPECT_LT(quality.hausdorffRelative, 0.01);
+  EXPECT_EQ(quality.invertedQuads, 0);
+}
+
 TEST(Quadrangulation, TeardropPatchGetsCornersAddedOnItsBoundary) {
   // A disk patch with a single corner (a teardrop, as around a singularity of index 3/4): its
   // boundary, the 8 outer vertices of a 3×3 grid, has only vertex 0 as a corner. Corners are

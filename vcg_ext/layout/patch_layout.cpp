@@ -402,6 +402,31 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     if (va == vb && index[va] == 0) closedLoopLength[i] = int(s.path.segments.size());
   }
 
+  // At an interior singular vertex the patch's wedge lies between the separatrix the boundary
+  // leaves by and the one it arrives by, both ending there: it spans as many of the vertex's
+  // sectors (90° each) as port steps from the first round (counter-clockwise, the patch on the
+  // left) to the second. Two steps mean a port between them that no separatrix leaves (an
+  // unresolved port): the boundary runs straight on through the vertex, which is no corner of
+  // this patch (it is one of the patches beyond the two separatrices).
+  auto portEndingAt = [&](int c, double param, int v) {
+    if (c < 0) return -1;
+    const LayoutSeparatrix& s = layout.separatrices[c];
+    if (std::abs(param) < 1e-6 && s.portA >= 0 && graph.ports()[s.portA].vertex == v) return s.portA;
+    if (std::abs(param - double(s.path.segments.size())) < 1e-6 && s.portB >= 0 && graph.ports()[s.portB].vertex == v)
+      return s.portB;
+    return -1;
+  };
+  auto straightThroughSingularity = [&](int v, int arriving, double arrivingParam, int leaving, double leavingParam) {
+    if (v >= mesh.numVertices() || index[v] == 0) return false;
+    const int in = portEndingAt(arriving, arrivingParam, v), out = portEndingAt(leaving, leavingParam, v);
+    if (in < 0 || out < 0) return false;
+    const PortNode &a = graph.ports()[in], &b = graph.ports()[out];
+    const SingularVertex& sv = graph.analysis().singularities[a.singularity];
+    if (sv.onBorder || a.singularity != b.singularity) return false;
+    const int m = int(sv.ports.size());
+    return ((a.portIndex - b.portIndex) % m + m) % m == 2;
+  };
+
   // Walk boundary loops. From boundary half-edge (a→b) in triangle t, rotate about b through
   // the patch (across edges inside it) to the next boundary half-edge leaving b.
   auto isBoundary = [&](int t, int i) { return out.edgeCurve[t][i] != -1; };
@@ -455,7 +480,7 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         double p1 = out.edgeParam[tt][ii][1], p2 = out.edgeParam[next / 3][next % 3][0];
         bool jump = c1 >= 0 && c1 == c2 && std::abs(p1 - p2) > 1e-6;
         if (jump && closedLoopLength[c1] > 0 && std::abs(std::abs(p1 - p2) - closedLoopLength[c1]) < 1e-6) jump = false;
-        bool isCorner = c1 != c2 || jump || alwaysCorner(b);
+        bool isCorner = (c1 != c2 || jump || alwaysCorner(b)) && !straightThroughSingularity(b, c1, p1, c2, p2);
         if (isCorner) {
           rep.corners += 1;
           out.corner[b] = 1;
