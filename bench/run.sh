@@ -167,24 +167,28 @@ done
   time by ours. The tracing (a Dijkstra search from every port until k sinks are reached)
   dominates where k = 30. The issue's target, 10× below the paper's time, is met on rockerarm
   only (whose comparison is unfair the other way: our rockerarm has 20K faces, the paper's
-  70K); bunny and fertility are 4–6× below on the layout, 3–5× on the whole run. Totals vary
-  by 10–25% from run to run on this machine (a shared virtual machine: the bunny's total was
-  5.5 s in one run and 6.9 s in another the same hour).
+  70K); bunny and fertility are 4–6× below on the layout, 3–5× on the whole run. Times vary
+  by 10–25% from run to run on this machine (a shared virtual machine: fertility's layout took
+  5.0 s in one bench run and 6.0 s in the next, the bunny's whole run 5.5–6.9 s the same hour).
 - **Quality**: every finished mesh but the dragon's is within 1% of the diagonal (the quad
   stage samples again with smaller quads where it is not). Misalignment is high on the open
   surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
   with their boundaries fixed by arc length, which shears the grid when the two long sides of a
   strip are not parallel; elsewhere 17–39% of the quads are more than π/16 off the field,
   against the paper's 2–9%. A few quads stay nearly flat or just folded (scaled Jacobian just
-  below 0 on some meshes). *invalid* counts patches with other than 4 corners, which the quad
-  stage cuts into 4-sided parts: camelhead's 6-corner patch and lilium's 5-corner one hold
-  ports no separatrix could leave (`layout.unresolved_ports`). On camelhead both ports lead
-  into a pocket of graph G whose every path ends at nodes without arcs (their direction, carried
-  into the next triangle, points back across the edge they entered by, so no auxiliary point
-  lies within 45° of it): the 27 and 22 nodes such a port reaches hold no sink, border or
-  separatrix to stop on. On lilium the port's paths all meet an existing separatrix
-  tangentially before anything else (without the barriers its search reaches the border). The
-  dragon's 30 are its 2 teardrops (cut as 3-gons, below) and 28 patches with 5 corners.
+  below 0 on some meshes). *invalid* counts patches with other than 4 corners (the quad stage
+  cuts them into 4-sided parts): only the dragon's 2 teardrops (below). Ports no separatrix
+  can leave (`layout.unresolved_ports`: 2 on camelhead, 1 on lilium) no longer make one: such
+  a port lies between two separatrices of its singularity, the patch it opens into meets the
+  vertex at 180°, and the vertex is a corner only of the patches beyond them (before: a
+  6-corner patch on camelhead, a 5-corner one on lilium and 28 on the dragon). An index-1/4
+  singularity with such a port becomes a regular vertex of the quads. On camelhead both ports
+  lead into a pocket of graph G whose every path ends at nodes without arcs (their direction,
+  carried into the next triangle, points back across the edge they entered by, so no
+  auxiliary point lies within 45° of it): the 27 and 22 nodes such a port reaches hold no
+  sink, border or separatrix to stop on. On lilium the port's paths all meet an existing
+  separatrix tangentially before anything else (without the barriers its search reaches the
+  border).
 - **Dragon**: its shipped field has 795 singularities, among them 2 of index 3/4 (one
   separatrix each), 20 of index 1/2 and 11 of index −1/2; the paper's dragon has 343. A 3/4
   singularity's only separatrix used to end inside a patch (a slit, which no grid fits): the
@@ -192,16 +196,16 @@ done
   patch with one corner, which gets two corners added on its boundary and is cut as a 3-gon
   (`layout.added_corners`). Its first 0-1 program (21K candidates, one independent part) runs
   into the 60 s limit (lp_solve's best selection by then is kept), and its 322 t-junctions tie 800 chord classes by 500 side equalities that no positive
-  integers satisfy (zero chains): 69 patches are split over the rounds. The side-length
+  integers satisfy (zero chains): 119 patches are split over the rounds. The side-length
   programs now take seconds (one cost variable per chord class instead of one per segment: the
   largest part's relaxation is proved infeasible in 0.4 s instead of 19 s; a part branch and
   bound cannot settle in time is solved by rounding its LP relaxation), and the dragon now
-  gets its quad mesh: 81K quads, but 1.2% from the surface after the 4 finer passes allowed
-  and with folded quads (scaled Jacobian down to −0.61) around the split patches. Its figures
-  change from run to run, as lp_solve's selection at the time limit does (another run: 85K
-  quads, 1.02%, −0.57).
-  With `--ilp-time-limit 5` the layout differs (5288 patches, 481 t-junctions) and about 50
-  patches still disagree after each of the 8 rounds of splits: the run stops with that reason.
+  gets its quad mesh: 87K quads, but 1.2% from the surface after the 4 finer passes allowed
+  and with folded quads (scaled Jacobian down to −0.59) around the split patches. Its figures
+  change from run to run, as lp_solve's selection at the time limit does (other runs: 81K and
+  85K quads, 1.02–1.19%). With `--ilp-time-limit 5` the layout differs (5288 patches, 481
+  t-junctions) and about 50 patches still disagree after each of the 8 rounds of splits: the
+  run stops with that reason.
 
 ## Speed: profile and changes
 
