@@ -203,9 +203,10 @@ done
   gets its quad mesh: 87K quads, but 1.2% from the surface after the 4 finer passes allowed
   and with folded quads (scaled Jacobian down to −0.59) around the split patches. Its figures
   change from run to run, as lp_solve's selection at the time limit does (other runs: 81K and
-  85K quads, 1.02–1.19%). With `--ilp-time-limit 5` the layout differs (5288 patches, 481
-  t-junctions) and about 50 patches still disagree after each of the 8 rounds of splits: the
-  run stops with that reason.
+  85K quads, 1.02–1.19%). With `--ilp-time-limit 5` the whole run takes 81 s: the greedy
+  selection (5288 patches, 481 t-junctions), 395 patches split in 7 rounds, 88K quads within
+  0.81% of the surface, scaled Jacobian down to −0.23 (before the corner rule above its splits
+  did not converge in 8 rounds).
 
 ## Speed: profile and changes
 
