@@ -31,8 +31,8 @@ TEST(ClosestPointIndex, AgreesWithBruteForceNearFarAndOutsideTheGrid) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(-1, 1);
   int checked = 0;
-  for (double spread : {0.0, 0.02, 0.3, 1.5, 6.0}) {
-    for (int i = 0; i < 150; ++i) {
+  for (double spread : {0.0, 0.02, 0.1, 0.3, 1.5, 6.0}) {
+    for (int i = 0; i < (spread == 0.1 ? 2000 : 150); ++i) {
       const int f = int(random() % torus.numFaces());
       const Vec3 onSurface = (torus.position(torus.vertex(f, 0)) + torus.position(torus.vertex(f, 1)) +
                               torus.position(torus.vertex(f, 2))) / 3;
@@ -44,5 +44,17 @@ TEST(ClosestPointIndex, AgreesWithBruteForceNearFarAndOutsideTheGrid) {
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 750);
+  EXPECT_EQ(checked, 2750);
+  // Points on a lattice through the whole grid and beyond it, finer than its cells: many lie
+  // just beside a cell face, on every side, where a shell bound off by one cell goes wrong.
+  const Vec3 lo(-1.6, -1.6, -0.6), hi(1.6, 1.6, 0.6);
+  int lattice = 0;
+  for (int i = 0; i <= 16; ++i)
+    for (int j = 0; j <= 16; ++j)
+      for (int k = 0; k <= 6; ++k) {
+        const Vec3 p = lo + Vec3(i / 16.0 * (hi.x() - lo.x()), j / 16.0 * (hi.y() - lo.y()), k / 6.0 * (hi.z() - lo.z()));
+        ASSERT_NEAR(index.closest(p).distance, bruteForceDistance(torus, p), 1e-12) << p.transpose();
+        ++lattice;
+      }
+  EXPECT_EQ(lattice, 17 * 17 * 7);
 }

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using namespace fcql;
@@ -84,8 +85,10 @@ TEST(IntegerProgram, TimeLimitIsHonoured) {
 
 TEST(IntegerProgram, RoundingTheRelaxationGivesAFeasibleIntegerSolution) {
   // min Σ |x_i − ideal_i| with x integer in [1, 50] and x0 + x1 = x2, x2 + x3 = x4 + x5: the
-  // relaxation sits on the fractional ideals; the rounded solution must be integral, satisfy
-  // both equalities, and cost no more than rounding each ideal on its own would (6 · 0.5).
+  // ideals break both equalities, so the relaxation moves some values off them, fractional
+  // ones among them. The rounded solution must be integral, satisfy both equalities, and cost
+  // no more than half a unit per variable (3); rounding each ideal on its own would cost 2.55
+  // but break the second equality (9 + 3 ≠ 4 + 7).
   const std::vector<double> ideal = {3.4, 5.5, 8.6, 2.5, 4.45, 6.7};
   IntegerProgram ip;
   std::vector<int> x;
@@ -119,4 +122,22 @@ TEST(IntegerProgram, RoundingTheRelaxationGivesAFeasibleIntegerSolution) {
   EXPECT_FALSE(bad.hasSolution());
   EXPECT_EQ(bad.status, IntegerProgram::Status::Infeasible);
   EXPECT_FALSE(bad.message.empty());
+
+  // Bounds that hold no integer, and an unbounded program, are reported as such.
+  IntegerProgram gap;
+  gap.addVariable(0.3, 0.7, true, 1);
+  EXPECT_EQ(gap.solveByRounding(5).status, IntegerProgram::Status::Infeasible);
+  IntegerProgram unbounded;
+  unbounded.setMaximize(true);
+  unbounded.addVariable(0, std::numeric_limits<double>::infinity(), true, 1);
+  const auto u = unbounded.solveByRounding(5);
+  EXPECT_EQ(u.status, IntegerProgram::Status::Unbounded);
+  EXPECT_FALSE(u.hasSolution());
+
+  // A relaxation that is integral at once is the program's optimum.
+  IntegerProgram integral;
+  const int z = integral.addVariable(2, 9, true, 1);
+  const auto i = integral.solveByRounding(5);
+  EXPECT_EQ(i.status, IntegerProgram::Status::Optimal);
+  EXPECT_EQ(i.values[z], 2);
 }

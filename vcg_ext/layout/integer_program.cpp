@@ -156,6 +156,18 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
     result.message = "empty program";
     return result;
   }
+  // The integers each integer variable may take: none means no solution at all.
+  std::vector<double> lowest(n), highest(n);
+  for (int j = 0; j < n; ++j) {
+    if (!integer_[j]) continue;
+    lowest[j] = std::ceil(lower_[j] - 1e-9);
+    highest[j] = std::floor(upper_[j] + 1e-9);
+    if (lowest[j] > highest[j]) {
+      result.status = Status::Infeasible;
+      result.message = "an integer variable's bounds hold no integer";
+      return result;
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   LpModel lp = buildModel(true, result.message);
@@ -173,15 +185,31 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
   }
   std::vector<int> rowBatch(numConstraints(), 0);
   int batch = 0;
+  auto fix = [&](int j, double value) {
+    fixed[j] = 1;
+    const double r = std::clamp(value, lowest[j], highest[j]);
+    set_bounds(lp.get(), j + 1, r, r);
+  };
   for (int round = 1;; ++round) {
-    // Each solve may take the whole limit: once it is spent, everything left is rounded at
-    // once and one more solve finishes the job (at most about twice the limit in all).
+    // Each solve may take the whole limit (a solve cut short leaves nothing to round): once
+    // it is spent, everything left is rounded at once and one more solve finishes the job,
+    // so the whole takes at most about three times the limit.
     set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
     const int ret = ::solve(lp.get());  // after the first round, from the last basis
-    if (ret != OPTIMAL && ret != SUBOPTIMAL && ret != PRESOLVED) {
-      result.status = ret == INFEASIBLE ? Status::Infeasible : Status::Failed;
-      result.message = ret == INFEASIBLE ? "the LP relaxation has no solution with the values rounded so far"
-                                         : "lp_solve failed on the LP relaxation (code " + std::to_string(ret) + ")";
+    const bool unbounded = ret == UNBOUNDED || ((ret == OPTIMAL || ret == SUBOPTIMAL || ret == PRESOLVED) &&
+                                                std::abs(get_objective(lp.get())) >= 0.1 * get_infinite(lp.get()));
+    if (unbounded) {
+      result.status = Status::Unbounded;
+      result.message = "the integer program is unbounded";
+    } else if (ret == INFEASIBLE) {
+      result.status = Status::Infeasible;
+      result.message = round == 1 ? "the integer program is infeasible (so is its LP relaxation)"
+                                  : "rounding the LP relaxation made it infeasible (no solution found this way)";
+    } else if (ret != OPTIMAL && ret != SUBOPTIMAL && ret != PRESOLVED) {
+      result.status = Status::Failed;
+      result.message = "lp_solve failed on the LP relaxation (code " + std::to_string(ret) + ")";
+    }
+    if (unbounded || (ret != OPTIMAL && ret != SUBOPTIMAL && ret != PRESOLVED)) {
       result.seconds = elapsed();
       return result;
     }
@@ -192,21 +220,19 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
     for (int j = 0; j < n; ++j) {
       if (!integer_[j] || fixed[j]) continue;
       const double r = std::round(x[j]);
-      if (std::abs(x[j] - r) <= 1e-6) {
-        fixed[j] = 1;
-        set_bounds(lp.get(), j + 1, r, r);
-      } else {
-        fractional.push_back({std::abs(x[j] - r), j});
-      }
+      if (std::abs(x[j] - r) <= 1e-6) fix(j, r);
+      else fractional.push_back({std::abs(x[j] - r), j});
     }
     if (fractional.empty()) {
       result.values = x;
       for (int j = 0; j < n; ++j)
-        if (integer_[j]) result.values[j] = std::round(x[j]);
+        if (integer_[j]) result.values[j] = std::clamp(std::round(x[j]), lowest[j], highest[j]);
       result.objective = get_objective(lp.get());
-      result.status = Status::TimeLimit;
-      result.message = "the LP relaxation rounded in " + std::to_string(round) +
-                       " rounds (a feasible solution, not proven optimal)";
+      // Integral from the start: the relaxation's optimum, hence the program's.
+      result.status = round == 1 && ret != SUBOPTIMAL ? Status::Optimal : Status::TimeLimit;
+      result.message = round == 1 ? "the LP relaxation's solution is integral"
+                                  : "the LP relaxation rounded in " + std::to_string(round) +
+                                        " rounds (a feasible solution, not proven optimal)";
       result.seconds = elapsed();
       return result;
     }
@@ -221,9 +247,7 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
       for (int row : coupling[j]) free = free && rowBatch[row] != batch;
       if (!free && !allNow) continue;
       for (int row : coupling[j]) rowBatch[row] = batch;
-      const double r = std::clamp(std::round(x[j]), std::ceil(lower_[j] - 1e-9), std::floor(upper_[j] + 1e-9));
-      fixed[j] = 1;
-      set_bounds(lp.get(), j + 1, r, r);
+      fix(j, std::round(x[j]));
     }
   }
 }

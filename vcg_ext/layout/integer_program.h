@@ -49,10 +49,12 @@ public:
   Result solve(double timeLimitSeconds) const;
   /// A feasible solution without branch and bound, for programs lp_solve cannot settle in
   /// time: the LP relaxation is solved, its integer variables with integral values are fixed
-  /// there and the others rounded, nearest to an integer first and never two of one
-  /// constraint at once, and so on until every integer variable is fixed (status TimeLimit: not proven optimal). Rounding can make
-  /// equality constraints unsatisfiable: status Infeasible then. Takes up to about twice the
-  /// time limit (each LP solve may use all of it; once it is spent, all is rounded at once).
+  /// there and the others rounded, nearest to an integer first and at most one of them per
+  /// constraint at a time, and so on until every integer variable is fixed. Status TimeLimit
+  /// (feasible, not proven optimal), or Optimal if the first relaxation is integral already.
+  /// Rounding can make equality constraints unsatisfiable: status Infeasible then, as for a
+  /// program with no solution at all. Takes up to about three times the time limit (each LP
+  /// solve may use all of it; once it is spent, all is rounded at once).
   Result solveByRounding(double timeLimitSeconds) const;
 
 private:

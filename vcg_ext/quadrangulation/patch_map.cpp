@@ -108,6 +108,7 @@ void PatchMap::indexTriangles() const {
   indexed_ = true;
   if (n == 0 || !(hi.x() >= lo.x()) || !(hi.y() >= lo.y())) return;
   gridLow_ = lo;
+  gridHigh_ = hi;
   const int side = std::clamp(int(std::sqrt(double(n))), 1, 1024);
   gridN_ = side;
   gridStep_ = Vec2(std::max(hi.x() - lo.x(), 1e-12) / side, std::max(hi.y() - lo.y(), 1e-12) / side);
@@ -147,13 +148,12 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
   };
   // A triangle holding x holds it in its bounding box, so it is listed in x's cell, where
   // triangles are in the patch's order: the first holding x is the one a scan of all finds.
-  if (gridN_ > 0 && x.x() >= gridLow_.x() && x.y() >= gridLow_.y() && x.x() <= gridLow_.x() + gridN_ * gridStep_.x() &&
-      x.y() <= gridLow_.y() + gridN_ * gridStep_.y()) {
+  if (gridN_ > 0 && x.x() >= gridLow_.x() && x.y() >= gridLow_.y() && x.x() <= gridHigh_.x() && x.y() <= gridHigh_.y()) {
     const int cell = cellCoordinate(x.y(), 1) * gridN_ + cellCoordinate(x.x(), 0);
     for (int i = cellBegin_[cell]; i < cellBegin_[cell + 1]; ++i) {
       double l0, l1, l2;
       const int k = cellTriangles_[i];
-      if (!locate(k, l0, l1, l2) || std::min({l0, l1, l2}) < 0) continue;
+      if (!locate(k, l0, l1, l2) || !(std::min({l0, l1, l2}) >= 0)) continue;  // NaN too, as the scan
       const auto& tri = layout_.triangles[triangles_[k]];
       return l0 * layout_.positions[tri[0]] + l1 * layout_.positions[tri[1]] + l2 * layout_.positions[tri[2]];
     }

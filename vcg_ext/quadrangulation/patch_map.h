@@ -47,7 +47,7 @@ private:
   // a grid of gridN_ × gridN_ cells over them listing the triangles whose box meets each cell.
   mutable bool indexed_ = false;
   mutable std::vector<std::array<Vec2, 3>> corners_;
-  mutable Vec2 gridLow_ = Vec2::Zero(), gridStep_ = Vec2::Ones();
+  mutable Vec2 gridLow_ = Vec2::Zero(), gridHigh_ = Vec2::Zero(), gridStep_ = Vec2::Ones();
   mutable int gridN_ = 0;
   mutable std::vector<int> cellBegin_, cellTriangles_;
 };

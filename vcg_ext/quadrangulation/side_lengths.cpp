@@ -202,7 +202,6 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     };
     IntegerProgram::Result r = attempt(componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, true, variableOf));
     if (!r.hasSolution()) {
-      rounded = false;
       r = attempt(componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, false, variableOf));
     }
     if (rounded) ++out.roundedParts;
@@ -212,9 +211,13 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
   }
   out.parts = int(components.size());
   out.programs = programs;
-  if (out.message.empty())
-    out.message = std::to_string(out.parts) + " independent parts, " + std::to_string(programs) + " solved by lp_solve" +
-                  (out.roundedParts > 0 ? " (" + std::to_string(out.roundedParts) + " by rounding the LP relaxation: no solution by branch and bound in time)" : "");
+  const std::string summary = std::to_string(out.parts) + " independent parts, " + std::to_string(programs) +
+                              " solved by lp_solve" +
+                              (out.roundedParts > 0 ? ", " + std::to_string(out.roundedParts) +
+                                                          " of them by rounding the LP relaxation (branch and bound "
+                                                          "found nothing better in time)"
+                                                    : "");
+  out.message = out.message.empty() ? summary : out.message + " (" + summary + ")";
   out.segments.resize(ns);
   for (int s = 0; s < ns; ++s) out.segments[s] = count[classOf[s]];
   for (int p = 0; p < int(graph.patches.size()); ++p)
