@@ -621,6 +621,44 @@ TEST(Quadrangulation, UnresolvedPortIsNoCornerOfThePatchItOpensInto) {
   EXPECT_EQ(quality.invertedQuads, 0);
 }
 
+TEST(Quadrangulation, UnresolvedPortAtAFiveValentSingularityIsNoCornerEither) {
+  // The same on the double torus, whose layout has 16 singularities of index −1/4 (5 ports):
+  // a separatrix with an end at one is taken away. At that end the merged patch spans two of
+  // the five sectors (180°): 4 corners, like every other patch, and the quads are clean.
+  auto q = layoutOf(makeDoubleTorus());
+  ASSERT_EQ(q->patches.numInvalidPatches(), 0);
+  const int before = q->patches.numPatches();
+  auto atFiveValent = [&](int port) {
+    const PortNode& pn = q->graph->ports()[port];
+    return q->analysis.singularities[pn.singularity].indexQuarters == -1;
+  };
+  auto it = std::find_if(q->layout.separatrices.begin(), q->layout.separatrices.end(), [&](const LayoutSeparatrix& s) {
+    return s.kind == LayoutSeparatrix::Full && atFiveValent(s.portA) && atFiveValent(s.portB);
+  });
+  ASSERT_NE(it, q->layout.separatrices.end());
+  const LayoutSeparatrix removed = *it;
+  q->layout.separatrices.erase(it);
+  q->patches = buildPatchLayout(*q->graph, q->layout);
+  EXPECT_LT(q->patches.numPatches(), before);
+  for (const auto& p : q->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
+  for (int port : {removed.portA, removed.portB}) EXPECT_TRUE(q->patches.corner[q->graph->ports()[port].vertex]);
+  QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.05);
+  EXPECT_TRUE(r.report.manifold) << r.report.problem;
+  EXPECT_EQ(r.report.genus, 2);
+  EXPECT_EQ(r.polygonPatches, 0);
+  // Both ends keep valence 5 in the quads (three 90° corners and one straight side; counted
+  // as a corner of the merged patch too they would get 4, and the n-gon's centre 6): the quads'
+  // valences are those of the field's singularities, 16 of 5 and 8 of 3.
+  std::map<int, int> valence, histogram;
+  for (const auto& f : r.mesh.quads)
+    for (int v : f) ++valence[v];
+  for (const auto& [v, n] : valence) ++histogram[n];
+  EXPECT_EQ(histogram[5], 16);
+  EXPECT_EQ(histogram[3], 8);
+  EXPECT_EQ(histogram[6], 0);
+  EXPECT_EQ(histogram[4] + histogram[5] + histogram[3], int(valence.size()));
+}
+
 TEST(Quadrangulation, TeardropPatchGetsCornersAddedOnItsBoundary) {
   // A disk patch with a single corner (a teardrop, as around a singularity of index 3/4): its
   // boundary, the 8 outer vertices of a 3×3 grid, has only vertex 0 as a corner. Corners are
