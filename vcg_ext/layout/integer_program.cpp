@@ -39,6 +39,8 @@ const char* toString(IntegerProgram::Status status) {
 
 using LpModel = std::unique_ptr<lprec, void (*)(lprec*)>;
 
+constexpr double kMinRelaxationSeconds = 60;
+
 /// The program as an lp_solve model (integer flags dropped when `relaxed`); null with
 /// `message` set if lp_solve refuses it.
 LpModel IntegerProgram::buildModel(bool relaxed, std::string& message) const {
@@ -191,10 +193,12 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
     set_bounds(lp.get(), j + 1, r, r);
   };
   for (int round = 1;; ++round) {
-    // Each solve may take the whole limit (a solve cut short leaves nothing to round): once
-    // it is spent, everything left is rounded at once and one more solve finishes the job,
-    // so the whole takes at most about three times the limit.
-    set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
+    // Each solve may take the whole limit, and at least kMinRelaxationSeconds: this is the
+    // fallback when branch and bound found nothing in time, and a relaxation cut short leaves
+    // nothing to round (the dragon's soft side-length programs take lp_solve 5–7 s each).
+    // Once the limit is spent, everything left is rounded at once and one more solve
+    // finishes the job.
+    set_timeout(lp.get(), long(std::ceil(std::max(timeLimitSeconds, kMinRelaxationSeconds))));
     const int ret = ::solve(lp.get());  // after the first round, from the last basis
     const bool unbounded = ret == UNBOUNDED || ((ret == OPTIMAL || ret == SUBOPTIMAL || ret == PRESOLVED) &&
                                                 std::abs(get_objective(lp.get())) >= 0.1 * get_infinite(lp.get()));

@@ -53,8 +53,9 @@ public:
   /// constraint at a time, and so on until every integer variable is fixed. Status TimeLimit
   /// (feasible, not proven optimal), or Optimal if the first relaxation is integral already.
   /// Rounding can make equality constraints unsatisfiable: status Infeasible then, as for a
-  /// program with no solution at all. Takes up to about three times the time limit (each LP
-  /// solve may use all of it; once it is spent, all is rounded at once).
+  /// program with no solution at all. Each LP solve may take the time limit or 60 s, whichever
+  /// is longer (a relaxation cut short leaves nothing to round); once the limit is spent, all
+  /// that is left is rounded at once and one more solve finishes.
   Result solveByRounding(double timeLimitSeconds) const;
 
 private:
