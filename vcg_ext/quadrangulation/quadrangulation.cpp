@@ -16,13 +16,6 @@ namespace {
 QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options,
                                         const SurfaceTopology& surface) {
   auto solveLengths = [&](const PatchGraph& graph) {
-    if (options.ilpTimeLimit > kQuickSideLengthSeconds) {
-      try {
-        return solveSideLengths(graph, options.targetEdgeLength, kQuickSideLengthSeconds);
-      } catch (const std::runtime_error&) {
-        // no solution in the short run: give it the whole limit
-      }
-    }
     return solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit);
   };
   QuadrangulationResult r;

@@ -27,13 +27,10 @@ struct QuadrangulationResult {
   std::string refinementProblem;  ///< why a finer pass failed (the mesh is then the last good one)
 };
 
-constexpr double kQuickSideLengthSeconds = 2;
-
 struct QuadrangulationOptions {
   double targetEdgeLength = 0;  ///< wanted quad edge length (> 0), in mesh units
-  /// Seconds per side-length program. lp_solve finds its (consistent) solution quickly and
-  /// then spends the time proving optimality, so each program first runs for at most
-  /// kQuickSideLengthSeconds, and for the whole limit only if that found no solution.
+  /// Seconds for the side lengths, in all (see solveSideLengths for how they are shared
+  /// among the independent parts).
   double ilpTimeLimit = 60;
   int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
   SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions

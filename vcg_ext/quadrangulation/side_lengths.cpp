@@ -21,6 +21,15 @@ int SideLengths::sideLength(const PatchGraph& g, int p, int k) const {
 namespace {
 
 constexpr double kUnderWeight = 3.0;
+/// Branch and bound per part: a part of at most kSmallProgramVariables variables gets up to
+/// kSmallProgramSeconds, a larger one kLargeProgramSeconds (lp_solve finds a solution quickly
+/// and then spends its time on proving optimality, which the dragon's parts of thousands of
+/// variables never reach), both within the time left of the whole limit. What branch and
+/// bound holds when stopped depends on timing; a small part is given long enough to finish,
+/// so that the same input gives the same quads on every run.
+constexpr int kSmallProgramVariables = 1000;
+constexpr double kSmallProgramSeconds = 30;
+constexpr double kLargeProgramSeconds = 2;
 constexpr double kMaxStretch = 1.5;
 
 /// Whether the opposite sides k and k + 2 of ps are one segment each (a hard equality that
@@ -191,7 +200,9 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     // Branch and bound stopped by the time limit may keep a poor solution (in the soft
     // program, mismatches it did not need): the rounded relaxation is tried too, the better kept.
     auto attempt = [&](const IntegerProgram& ip) {
-      IntegerProgram::Result best = ip.solve(limit);
+      const double budget =
+          std::min(limit, ip.numVariables() <= kSmallProgramVariables ? kSmallProgramSeconds : kLargeProgramSeconds);
+      IntegerProgram::Result best = ip.solve(budget);
       if (best.status == IntegerProgram::Status::Optimal || best.status == IntegerProgram::Status::Infeasible) return best;
       IntegerProgram::Result other = ip.solveByRounding(limit);
       if (other.hasSolution() && (!best.hasSolution() || other.objective < best.objective - 1e-9)) {
