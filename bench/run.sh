@@ -209,13 +209,14 @@ done
   did not converge in 8 rounds).
 
 - **Beyond the shared meshes** (not in the table; same machine, default parameters): the
-  bunny split 1→4 (111K faces, same shape) runs in 19 s with 0.7 GB at most; its first quad
+  bunny split 1→4 (111K faces, same shape) runs in 25 s with 0.7 GB at most; its first quad
   pass is 1.07% from the surface, and the 4 finer passes that follow take half the time. Its
-  side-length program after the zero-chain splits (118 variables) is one branch and bound
-  does not finish within the quick pass's 2 s: the solution then kept is whatever lp_solve
-  holds when stopped, so the quad mesh differs from run to run (8210–8530 quads at one
-  target edge); rounding the relaxation instead gets stuck on its equalities there. Where
-  branch and bound finishes (every shared mesh but the dragon) the output is the same on
+  side-length part after the zero-chain splits (118 variables) needs about 3 s of branch and
+  bound: stopped at 2 s as it was, lp_solve kept whatever it held then and the quads varied
+  from run to run (8210–8530 at one target edge; rounding the relaxation gets stuck on its
+  equalities there). Parts of up to 1000 variables now get up to 30 s, and it gives the same
+  6050 quads on every run; larger parts (the dragon's) still stop at 2 s, so only the
+  dragon's figures vary. Where branch and bound finishes the output is the same on
   every run. Six variants of kitten and fandisk (scaled by 10⁻⁶ and 10⁶, rotated, noisy,
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
