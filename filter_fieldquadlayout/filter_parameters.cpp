@@ -121,9 +121,9 @@ void addLayoutParameters(RichParameterList& list) {
   list.addParam(RichFloat(
       QString(LayoutParameters::kIlpTimeLimit), float(LayoutParameters::kDefaultIlpTimeLimit),
       "ILP time limit (seconds)",
-      "Time limit of each 0-1 program that selects the separatrices (lp_solve). When it is "
-      "reached the best selection found so far is used and the log says so. Valid range "
-      "1..86400 seconds."));
+      "Time limit of each 0-1 program that selects the separatrices (lp_solve), and of the "
+      "side-length program of the quad mesh in all. When it is reached the best selection "
+      "found so far is used and the log says so. Valid range 1..86400 seconds."));
 }
 
 LayoutParameters readLayoutParameters(const RichParameterList& list) {
