@@ -192,13 +192,13 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double limit = std::max(1.0, timeLimitSeconds - elapsed);
     std::map<int, int> variableOf;
-    // Branch and bound first; where it finds nothing in time (the dragon's layout has a part
-    // of 800 classes tied by 500 equalities), the LP relaxation rounded. Forced equalities
-    // that cannot all hold are made soft: the patches that then disagree are split once more
-    // (zero chains).
+    // Branch and bound first, with the budget above. If it stops without proving optimality
+    // or finds nothing (the dragon's layout has a part of 800 classes tied by 500 equalities),
+    // the LP relaxation is rounded too and the better solution kept: a stopped branch and
+    // bound may hold a poor one (in the soft program, mismatches it did not need). Forced
+    // equalities that cannot all hold are made soft: the patches that then disagree are split
+    // once more (zero chains).
     bool rounded = false;
-    // Branch and bound stopped by the time limit may keep a poor solution (in the soft
-    // program, mismatches it did not need): the rounded relaxation is tried too, the better kept.
     auto attempt = [&](const IntegerProgram& ip) {
       const double budget =
           std::min(limit, ip.numVariables() <= kSmallProgramVariables ? kSmallProgramSeconds : kLargeProgramSeconds);
