@@ -124,7 +124,9 @@ bool meetsBeforeEnd(const Vec3& a0, const Vec3& a1, const BarrierSet::Chord& c) 
 /// in the bucket of the highest bit in which its key differs from the last key popped. Pushes
 /// are O(1) and each entry moves down at most 32 times, without the branchy sift-downs of a
 /// comparison heap. Among equal keys the order is fixed (last in, first out), so results do
-/// not depend on timing.
+/// not depend on timing. A node is in the heap at most once: a shorter distance found for it
+/// moves its entry (decrease), found through the position kept per node, instead of adding a
+/// second one that would be popped stale later (half of all pops, before).
 class RadixHeap {
 public:
   using Entry = std::pair<float, int>;
@@ -136,9 +138,23 @@ public:
   }
   void push(Entry e) {
     std::uint32_t key = keyOf(e.first);
-    buckets_[bucketOf(key)].push_back({key, e.second});
+    auto& b = buckets_[bucketOf(key)];
+    if (e.second >= 0) position_[e.second] = int(b.size());
+    b.push_back({key, e.second});
     ++size_;
   }
+  /// Lowers the key of `node`, in the heap with key `old`, to `e.first`.
+  void decrease(float old, Entry e) {
+    auto& b = buckets_[bucketOf(keyOf(old))];
+    const int at = position_[e.second];
+    b[at] = b.back();
+    if (b[at].node >= 0) position_[b[at].node] = at;
+    b.pop_back();
+    --size_;
+    push(e);
+  }
+  /// Room for the positions of nodes 0 .. nodes − 1 (terminals, negative, are never moved).
+  void resize(std::size_t nodes) { position_.resize(nodes); }
   /// Removes and returns an entry with the smallest key. Requires !empty().
   Entry pop() {
     if (buckets_[0].empty()) {
@@ -147,7 +163,11 @@ public:
       std::uint32_t smallest = buckets_[i][0].key;
       for (const Item& it : buckets_[i]) smallest = std::min(smallest, it.key);
       last_ = smallest;
-      for (const Item& it : buckets_[i]) buckets_[bucketOf(it.key)].push_back(it);
+      for (const Item& it : buckets_[i]) {
+        auto& b = buckets_[bucketOf(it.key)];
+        if (it.node >= 0) position_[it.node] = int(b.size());
+        b.push_back(it);
+      }
       buckets_[i].clear();
     }
     Item it = buckets_[0].back();
@@ -171,6 +191,7 @@ private:
   int bucketOf(std::uint32_t key) const { return key == last_ ? 0 : 32 - __builtin_clz(key ^ last_); }
 
   std::array<std::vector<Item>, 33> buckets_;
+  std::vector<int> position_;  ///< per node: its index in its bucket while in the heap
   std::size_t size_ = 0;
   std::uint32_t last_ = 0;
 };
@@ -184,7 +205,7 @@ struct Terminal {
 
 class Search {
 public:
-  explicit Search(const GeodesicGraph& g) : g_(g), state_(g.numNodeSlots()) {}
+  explicit Search(const GeodesicGraph& g) : g_(g), state_(g.numNodeSlots()) { heap_.resize(state_.size()); }
 
   std::vector<TracedPath> run(int port, const SearchOptions& opt) {
     reset();
@@ -204,9 +225,7 @@ public:
         found.push_back(buildTerminalPath(port, terminals_[-1 - u], d));
         break;
       }
-      // Every push lowers a node's distance, so only its last entry matches it: an older
-      // entry is stale, and a node is settled when its matching entry is popped.
-      if (d > state_[u].dist) continue;
+      // A node is in the heap once, with its current distance: popped, it is settled.
       if (g_.isSinkNode(u)) {
         int p = g_.portOfNode(u);
         bool allowed = p != port && (opt.sinkAllowed.empty() || opt.sinkAllowed[p] != 0);
@@ -265,8 +284,10 @@ public:
           }
         }
         if (nd < state_[v].dist) {
+          const float old = state_[v].dist;
           setDist(v, nd, u);
-          heap.push({nd, v});
+          if (std::isinf(old)) heap.push({nd, v});
+          else heap.decrease(old, {nd, v});
         }
       }
     }
