@@ -166,10 +166,11 @@ done
   the quad mesh, its measurements and the output files. The last column divides the paper's
   time by ours. The tracing (a Dijkstra search from every port until k sinks are reached)
   dominates where k = 30. The issue's target, 10× below the paper's time, is met on rockerarm
-  only (whose comparison is unfair the other way: our rockerarm has 20K faces, the paper's
-  70K); bunny and fertility are 4–6× below on the layout, 3–5× on the whole run. Times vary
-  by 10–25% from run to run on this machine (a shared virtual machine: fertility's layout took
-  5.0 s in one bench run and 6.0 s in the next, the bunny's whole run 5.5–6.9 s the same hour).
+  only (16× on the layout, 10.5× on the whole run; the comparison is unfair the other way: our
+  rockerarm has 20K faces, the paper's 70K); bunny and fertility are 4.8–6.5× below on the
+  layout, 3.4–5.3× on the whole run. Times vary by 10–25% from run to run on this machine (a
+  shared virtual machine: fertility's layout took 5.0 s in one bench run and 6.0 s in the next
+  with the same code).
 - **Quality**: every finished mesh but the dragon's is within 1% of the diagonal (the quad
   stage samples again with smaller quads where it is not). Misalignment is high on the open
   surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
@@ -195,15 +196,16 @@ done
   layout removes such dead ends (`layout.dead_ends_removed`), the singularity lies inside a
   patch with one corner, which gets two corners added on its boundary and is cut as a 3-gon
   (`layout.added_corners`). Its first 0-1 program (21K candidates, one independent part) runs
-  into the 60 s limit (lp_solve's best selection by then is kept), and its 322 t-junctions tie 800 chord classes by 500 side equalities that no positive
-  integers satisfy (zero chains): 119 patches are split over the rounds. The side-length
+  into the 60 s limit (lp_solve's best selection by then is kept), and its 322 t-junctions
+  tie 800 chord classes by 500 side equalities that no positive integers satisfy (zero
+  chains): 113–119 patches are split over the rounds. The side-length
   programs now take seconds (one cost variable per chord class instead of one per segment: the
   largest part's relaxation is proved infeasible in 0.4 s instead of 19 s; a part branch and
   bound cannot settle in time is solved by rounding its LP relaxation), and the dragon now
-  gets its quad mesh: 87K quads, but 1.2% from the surface after the 4 finer passes allowed
-  and with folded quads (scaled Jacobian down to −0.59) around the split patches. Its figures
-  change from run to run, as lp_solve's selection at the time limit does (other runs: 81K and
-  85K quads, 1.02–1.19%). With `--ilp-time-limit 5` the whole run takes 81 s: the greedy
+  gets its quad mesh: 81K–96K quads, but 1.0–1.2% from the surface after the 4 finer passes
+  allowed and with folded quads (scaled Jacobian down to about −0.6) around the split
+  patches. Its figures change from run to run, as lp_solve's selection at the time limit
+  does. With `--ilp-time-limit 5` the whole run takes 81 s: the greedy
   selection (5288 patches, 481 t-junctions), 395 patches split in 7 rounds, 88K quads within
   0.81% of the surface, scaled Jacobian down to −0.23 (before the corner rule above its splits
   did not converge in 8 rounds).
@@ -265,6 +267,13 @@ far longer than straight lines, so the bound is weak, and it cost more than it s
 10.1 s against 8.8 s, one thread). Prefetching the data of the next nodes to be popped: the
 radix heap rarely knows them in advance (its lowest bucket holds only keys equal to the last
 one popped): 6.6 against 7.0 s, within this machine's noise.
+
+Kept: the radix heap now holds each node once. Before, a node whose distance got shorter was
+pushed again and its older entry popped stale later (half of all pops, each reading the node's
+distance); now its entry moves to the bucket of its new key (a position per node, swap-remove
+from the old bucket), and a pop needs nothing from the node. The same candidates and layouts,
+byte for byte. Bunny tracing on one thread, best of 3 alternating runs: 6.22 → 5.32 s (1.17×);
+in one run on two threads, camelhead 0.99 → 0.78 s and rockerarm 2.10 → 1.76 s.
 
 The quad stage and the measurements were the next cost. The patch sampling found the triangle
 under each grid point by scanning all of the patch's triangles through hash lookups (18% of
