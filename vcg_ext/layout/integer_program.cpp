@@ -39,7 +39,22 @@ const char* toString(IntegerProgram::Status status) {
 
 using LpModel = std::unique_ptr<lprec, void (*)(lprec*)>;
 
+namespace {
+
 constexpr double kMinRelaxationSeconds = 60;
+
+/// The result for a program without variables: nothing to solve.
+IntegerProgram::Result emptyProgramResult() {
+  IntegerProgram::Result result;
+  result.status = IntegerProgram::Status::Optimal;
+  result.message = "empty program";
+  return result;
+}
+
+/// lp_solve may "solve" an unbounded model to its infinity (1e30).
+bool objectiveAtInfinity(lprec* lp) { return std::abs(get_objective(lp)) >= 0.1 * get_infinite(lp); }
+
+}  // namespace
 
 /// The program as an lp_solve model (integer flags dropped when `relaxed`); null with
 /// `message` set if lp_solve refuses it.
@@ -86,13 +101,9 @@ LpModel IntegerProgram::buildModel(bool relaxed, std::string& message) const {
 }
 
 IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
-  Result result;
   const int n = numVariables();
-  if (n == 0) {
-    result.status = Status::Optimal;
-    result.message = "empty program";
-    return result;
-  }
+  if (n == 0) return emptyProgramResult();
+  Result result;
   auto start = std::chrono::steady_clock::now();
   LpModel lp = buildModel(false, result.message);
   if (!lp) return result;
@@ -110,8 +121,7 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
     case PRESOLVED:
       result.status = Status::Optimal;
       readSolution();
-      // lp_solve may "solve" an unbounded model to its infinity (1e30).
-      if (std::abs(result.objective) >= 0.1 * get_infinite(lp.get())) {
+      if (objectiveAtInfinity(lp.get())) {
         result.status = Status::Unbounded;
         result.values.clear();
         result.message = "the integer program is unbounded";
@@ -151,13 +161,9 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
 }
 
 IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) const {
-  Result result;
   const int n = numVariables();
-  if (n == 0) {
-    result.status = Status::Optimal;
-    result.message = "empty program";
-    return result;
-  }
+  if (n == 0) return emptyProgramResult();
+  Result result;
   // The integers each integer variable may take: none means no solution at all.
   std::vector<double> lowest(n), highest(n);
   for (int j = 0; j < n; ++j) {
@@ -200,8 +206,8 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
     // finishes the job.
     set_timeout(lp.get(), long(std::ceil(std::max(timeLimitSeconds, kMinRelaxationSeconds))));
     const int ret = ::solve(lp.get());  // after the first round, from the last basis
-    const bool unbounded = ret == UNBOUNDED || ((ret == OPTIMAL || ret == SUBOPTIMAL || ret == PRESOLVED) &&
-                                                std::abs(get_objective(lp.get())) >= 0.1 * get_infinite(lp.get()));
+    const bool unbounded =
+        ret == UNBOUNDED || ((ret == OPTIMAL || ret == SUBOPTIMAL || ret == PRESOLVED) && objectiveAtInfinity(lp.get()));
     if (unbounded) {
       result.status = Status::Unbounded;
       result.message = "the integer program is unbounded";

@@ -146,6 +146,11 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
     l0 = cross2(B - x, C - x) / area, l1 = cross2(C - x, A - x) / area, l2 = 1 - l0 - l1;
     return true;
   };
+  // The surface point at barycentric coordinates (l0, l1, l2) of layout triangle t.
+  auto pointOn = [&](int t, double l0, double l1, double l2) {
+    const auto& tri = layout_.triangles[t];
+    return Vec3(l0 * layout_.positions[tri[0]] + l1 * layout_.positions[tri[1]] + l2 * layout_.positions[tri[2]]);
+  };
   // A triangle holding x holds it in its bounding box, so it is listed in x's cell, where
   // triangles are in the patch's order: the first holding x is the one a scan of all finds.
   if (gridN_ > 0 && x.x() >= gridLow_.x() && x.y() >= gridLow_.y() && x.x() <= gridHigh_.x() && x.y() <= gridHigh_.y()) {
@@ -154,8 +159,7 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
       double l0, l1, l2;
       const int k = cellTriangles_[i];
       if (!locate(k, l0, l1, l2) || !(std::min({l0, l1, l2}) >= 0)) continue;  // NaN too, as the scan
-      const auto& tri = layout_.triangles[triangles_[k]];
-      return l0 * layout_.positions[tri[0]] + l1 * layout_.positions[tri[1]] + l2 * layout_.positions[tri[2]];
+      return pointOn(triangles_[k], l0, l1, l2);
     }
   }
   // Outside every triangle (or on none, by rounding): the scan finds the nearest.
@@ -174,8 +178,7 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
     const double sum = b0 + b1 + b2;
     b0 /= sum, b1 /= sum, b2 /= sum;
   }
-  const auto& tri = layout_.triangles[best];
-  return b0 * layout_.positions[tri[0]] + b1 * layout_.positions[tri[1]] + b2 * layout_.positions[tri[2]];
+  return pointOn(best, b0, b1, b2);
 }
 
 }  // namespace fcql

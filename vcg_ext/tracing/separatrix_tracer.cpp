@@ -137,10 +137,7 @@ public:
     last_ = 0;
   }
   void push(Entry e) {
-    std::uint32_t key = keyOf(e.first);
-    auto& b = buckets_[bucketOf(key)];
-    if (e.second >= 0) position_[e.second] = int(b.size());
-    b.push_back({key, e.second});
+    place({keyOf(e.first), e.second});
     ++size_;
   }
   /// Lowers the key of `node`, in the heap with key `old`, to `e.first`.
@@ -163,11 +160,7 @@ public:
       std::uint32_t smallest = buckets_[i][0].key;
       for (const Item& it : buckets_[i]) smallest = std::min(smallest, it.key);
       last_ = smallest;
-      for (const Item& it : buckets_[i]) {
-        auto& b = buckets_[bucketOf(it.key)];
-        if (it.node >= 0) position_[it.node] = int(b.size());
-        b.push_back(it);
-      }
+      for (const Item& it : buckets_[i]) place(it);
       buckets_[i].clear();
     }
     Item it = buckets_[0].back();
@@ -189,6 +182,12 @@ private:
     return k;
   }
   int bucketOf(std::uint32_t key) const { return key == last_ ? 0 : 32 - __builtin_clz(key ^ last_); }
+  /// Appends the item to its bucket, noting where a node went.
+  void place(const Item& it) {
+    auto& b = buckets_[bucketOf(it.key)];
+    if (it.node >= 0) position_[it.node] = int(b.size());
+    b.push_back(it);
+  }
 
   std::array<std::vector<Item>, 33> buckets_;
   std::vector<int> position_;  ///< per node: its index in its bucket while in the heap
