@@ -182,6 +182,29 @@ TEST(Tracing, SmallerPhiGivesMoreNodes) {
   EXPECT_GT(gf.numArcs(), gc.numArcs());
 }
 
+TEST(Tracing, ArcsIntoDeadEndsAreMarkedAndNoOthers) {
+  // Searches for sinks skip the marked arcs without looking at their targets: an arc is
+  // marked exactly when its target is a border terminal or an edge node without arcs out.
+  // The lilium (open, with its own field) has both kinds.
+  FCQL_REQUIRE_SHARED(obj, "lilium.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("lilium.ffield"));
+  FieldAnalysis a = analyzeField(m, f);
+  GeodesicGraph g(m, f, a, TracingParameters());
+  long border = 0, stuck = 0;
+  for (int n = 0; n < g.numNodeSlots(); ++n)
+    for (const GeodesicGraph::Arc* arc = g.arcsBegin(n); arc != g.arcsEnd(n); ++arc) {
+      const int v = GeodesicGraph::targetNode(*arc);
+      const bool terminal = g.isBorderTerminal(v);
+      const bool noWayOn = !g.isPortNode(v) && g.arcsBegin(v) == g.arcsEnd(v);
+      ASSERT_EQ(GeodesicGraph::isDeadEnd(*arc), terminal || noWayOn) << "arc " << n << " -> " << v;
+      border += terminal;
+      stuck += noWayOn && !terminal;
+    }
+  EXPECT_GT(border, 0);
+  EXPECT_GT(stuck, 0);
+}
+
 TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
   FCQL_REQUIRE_SHARED(obj, "eight.obj");
   SurfaceMesh m = loadMesh(obj);

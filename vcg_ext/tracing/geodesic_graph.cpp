@@ -111,6 +111,11 @@ public:
                   return a.target != b.target ? a.target < b.target : a.weight < b.weight;
                 });
     g_.numLiveNodes_ = std::count(live.begin(), live.end(), 1);
+    // Arcs into edge nodes without arcs out (their direction, carried into the next triangle,
+    // points back across the edge) lead nowhere either: complemented like border terminals,
+    // after the sort, so that the order of the arcs does not change.
+    for (GeodesicGraph::Arc& a : g_.arcs_)
+      if (a.target >= 0 && !g_.isPortNode(a.target) && begin[a.target] == begin[a.target + 1]) a.target = ~a.target;
   }
 
 private:

@@ -17,8 +17,9 @@
 // non-tree edge, so slots are numbered combed direction first:
 //    slot = (combed · numSamples + sample) · 2 + side,   side = side of t w.r.t. the edge
 //    (see EdgeSampling), then the port nodes.
-// Arcs (stored in one flat CSR array of {target, weight}; a target that is a border terminal
-// is stored complemented, ~node, so that searches that drop such paths need no lookup)
+// Arcs (stored in one flat CSR array of {target, weight}; a target that is a border terminal,
+// or an edge node without arcs out, is stored complemented, ~node, so that searches that only
+// look for sinks skip such dead ends without a lookup)
 //  - From an edge node (s, t, j) to every auxiliary point s' on the two other edges of t whose
 //    direction s' − s lies within 45° of direction j of t (its sector); the target is the node
 //    of s' in the triangle t' across that edge, carrying the transported direction
@@ -104,12 +105,14 @@ public:
   }
 
   /// An arc of G: `target` is the node reached, complemented (~node, negative) when that node
-  /// is a border terminal; weight = Eq. 1.
+  /// is a dead end: a border terminal or an edge node without arcs out; weight = Eq. 1.
   struct Arc {
     int target;
     float weight;
   };
-  static bool entersBorder(const Arc& a) { return a.target < 0; }
+  /// Whether no path through the arc's target reaches a sink: only searches that end paths
+  /// at the border or at a crossing on the way need such arcs.
+  static bool isDeadEnd(const Arc& a) { return a.target < 0; }
   static int targetNode(const Arc& a) { return a.target < 0 ? ~a.target : a.target; }
 
   int numNodeSlots() const { return int(arcBegin_.size()) - 1; }
@@ -117,6 +120,8 @@ public:
   /// Arcs leaving `node`: [arcsBegin(node), arcsEnd(node)).
   const Arc* arcsBegin(int node) const { return arcs_.data() + arcBegin_[node]; }
   const Arc* arcsEnd(int node) const { return arcs_.data() + arcBegin_[node + 1]; }
+  /// Asks the cache for where the arcs of `node` are (searches prefetch ahead).
+  void prefetchArcRange(int node) const { __builtin_prefetch(arcBegin_.data() + node); }
 
   /// |G|: nodes with at least one arc (in or out) and arcs.
   long numNodes() const { return numLiveNodes_; }

@@ -238,10 +238,19 @@ public:
         found.push_back(buildPath(port, u, d, TracedPath::Border));
         break;
       }
+      // The search waits on memory, not arithmetic: ask for the targets' records (and where
+      // their arcs are) before the relaxations, whose branches would otherwise take the
+      // cache misses one at a time.
+      for (const GeodesicGraph::Arc *a = g_.arcsBegin(u), *end = g_.arcsEnd(u); a != end; ++a) {
+        if (GeodesicGraph::isDeadEnd(*a) && !opt.tJunctionMode) continue;
+        const int v = GeodesicGraph::targetNode(*a);
+        __builtin_prefetch(&state_[v]);
+        g_.prefetchArcRange(v);
+      }
       for (const GeodesicGraph::Arc *a = g_.arcsBegin(u), *end = g_.arcsEnd(u); a != end; ++a) {
         int v = a->target;
-        if (GeodesicGraph::entersBorder(*a)) {
-          if (!opt.tJunctionMode) continue;  // paths reaching the border are dropped
+        if (GeodesicGraph::isDeadEnd(*a)) {
+          if (!opt.tJunctionMode) continue;  // paths reaching the border or a dead end are dropped
           v = ~v;
         }
         float nd = d + a->weight;
@@ -285,7 +294,10 @@ public:
         if (nd < state_[v].dist) {
           const float old = state_[v].dist;
           setDist(v, nd, u);
-          if (std::isinf(old)) heap.push({nd, v});
+          if (std::isinf(old)) {
+            heap.push({nd, v});
+            __builtin_prefetch(g_.arcsBegin(v));  // long before v is popped
+          }
           else heap.decrease(old, {nd, v});
         }
       }
