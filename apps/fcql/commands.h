@@ -11,8 +11,8 @@
 #include "quadrangulation/side_lengths.h"
 #include "tracing/separatrix_graph.h"
 
+#include <chrono>
 #include <memory>
-
 #include <string>
 
 namespace fcql {
@@ -30,6 +30,12 @@ struct FieldStage {
 
 /// Progress and information lines on stderr, silenced by --quiet.
 void progress(bool quiet, const std::string& line);
+
+using Clock = std::chrono::steady_clock;
+/// Records time_s.output (writing the result files, since `outputStart`) and time_s.total
+/// (the whole command since `start`, those files included): call just before stats.json is
+/// written, the one file it leaves out.
+void recordTotalTime(StatsJson& stats, Clock::time_point start, Clock::time_point outputStart);
 
 /// Loads MESH (first positional) or builds --example NAME, then reads --field or computes a
 /// field (--sharp-angle), analyses it and records mesh.* field.* time_s.field in `stats`.

@@ -16,6 +16,12 @@ void progress(bool quiet, const std::string& line) {
   if (!quiet) std::cerr << "fcql: " << line << std::endl;
 }
 
+void recordTotalTime(StatsJson& stats, Clock::time_point start, Clock::time_point outputStart) {
+  const auto now = Clock::now();
+  stats.set("time_s.output", std::chrono::duration<double>(now - outputStart).count());
+  stats.set("time_s.total", std::chrono::duration<double>(now - start).count());
+}
+
 FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
   const auto& pos = cl.positional();
   bool example = cl.has("example");

@@ -78,12 +78,13 @@ int layoutCommand(int argc, char** argv) {
   FieldStage fs = runFieldStage(cl, stats, quiet);
   TraceStage ts = runTraceStage(fs, tp, stats, quiet);
   LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
-  stats.set("time_s.total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  const auto outputStart = Clock::now();
   OutputDir out(cl.value("out"));
   saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
   out.writeText("candidates.obj", candidatesObj(ts.h));
   out.writeText("separatrices.obj", separatricesToObj(ls.layout));
   out.writeText("layout.ply", patchLayoutToPly(ls.patches));
+  recordTotalTime(stats, start, outputStart);
   out.writeText("stats.json", stats.toString());
   out.commit();
   progress(quiet, "wrote separatrices.obj, layout.ply, candidates.obj, field.ffield and stats.json in " + cl.value("out"));

@@ -110,13 +110,14 @@ int quadCommand(int argc, char** argv) {
   TraceStage ts = runTraceStage(fs, tp, stats, quiet);
   LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
   QuadStage qs = runQuadStage(fs, ls, cl, stats, quiet);
-  stats.set("time_s.total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  const auto outputStart = Clock::now();
   OutputDir out(cl.value("out"));
   saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
   out.writeText("candidates.obj", candidatesObj(ts.h));
   out.writeText("separatrices.obj", separatricesToObj(ls.layout));
   out.writeText("layout.ply", patchLayoutToPly(ls.patches));
   out.writeText("quad.obj", quadMeshToObj(qs.mesh));
+  recordTotalTime(stats, start, outputStart);
   out.writeText("stats.json", stats.toString());
   out.commit();
   progress(quiet, "wrote quad.obj, layout.ply, separatrices.obj, candidates.obj, field.ffield and stats.json in " + cl.value("out"));

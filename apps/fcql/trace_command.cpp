@@ -84,10 +84,11 @@ int traceCommand(int argc, char** argv) {
   auto start = std::chrono::steady_clock::now();
   FieldStage fs = runFieldStage(cl, stats, quiet);
   TraceStage ts = runTraceStage(fs, params, stats, quiet);
-  stats.set("time_s.total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  const auto outputStart = Clock::now();
   OutputDir out(cl.value("out"));
   saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
   out.writeText("candidates.obj", candidatesObj(ts.h));
+  recordTotalTime(stats, start, outputStart);
   out.writeText("stats.json", stats.toString());
   out.commit();
   progress(quiet, "wrote " + out.finalPath("candidates.obj") + " and " + out.finalPath("stats.json"));

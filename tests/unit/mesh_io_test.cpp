@@ -1,11 +1,13 @@
 #include "mesh/generators.h"
 #include "mesh/mesh_io.h"
+#include "mesh/number_text.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
+#include <random>
 
 using namespace fcql;
 
@@ -74,4 +76,26 @@ TEST(MeshIo, BadFilesGiveOneLineErrors) {
   std::string msg = loadError(nm);
   EXPECT_NE(msg.find("nm.obj"), std::string::npos);
   EXPECT_NE(msg.find("non-manifold edge"), std::string::npos);
+}
+
+TEST(MeshIo, NumbersAreWrittenAsPrintfWritesThem) {
+  // The OBJ and field writers format coordinates with std::to_chars: the text must be the
+  // "%.<digits>g" of the stream formatting it replaces, and read back within that precision.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> exponent(-12, 12);
+  std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.1, 1e-300, 123456789012.0, 0.5e-5};
+  for (int i = 0; i < 2000; ++i) values.push_back(std::ldexp(mantissa(random), exponent(random)));
+  for (double x : values)
+    for (int digits : {9, 10}) {
+      std::string text;
+      appendNumber(text, x, digits);
+      char expected[64];
+      std::snprintf(expected, sizeof expected, "%.*g", digits, x);
+      ASSERT_EQ(text, expected) << "digits " << digits;
+      EXPECT_NEAR(std::stod(text), x, 1e-8 * std::abs(x) + 1e-300);
+    }
+  std::string n;
+  appendNumber(n, -1234567890123L);
+  EXPECT_EQ(n, "-1234567890123");
 }

@@ -1,10 +1,11 @@
 #include "field/field_io.h"
 
+#include "mesh/number_text.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 
 namespace fcql {
@@ -181,25 +182,32 @@ CrossField loadField(const SurfaceMesh& mesh, const std::string& path) {
 
 void saveFField(const SurfaceMesh& mesh, const CrossField& field, const std::string& path) {
   if (field.numFaces() != mesh.numFaces()) throw FieldError("the field does not match the mesh");
-  std::ostringstream out;
-  out << std::setprecision(9);
-  out << "# frame generated with VCG\ntarget frame\n" << mesh.numFaces() << "\n";
-  out << "k1 k2 k1v_x k1v_y k1v_z k2v_x k2v_y k2v_z\n";
+  std::string out = "# frame generated with VCG\ntarget frame\n" + std::to_string(mesh.numFaces()) + "\n";
+  out += "k1 k2 k1v_x k1v_y k1v_z k2v_x k2v_y k2v_z\n";
   for (int f = 0; f < mesh.numFaces(); ++f) {
     Vec3 d1 = field.u[f], d2 = field.direction(mesh, f, 1);
-    out << "1 1 " << d1.x() << ' ' << d1.y() << ' ' << d1.z() << ' ' << d2.x() << ' ' << d2.y() << ' '
-        << d2.z() << '\n';
+    out += "1 1";
+    for (const Vec3* d : {&d1, &d2})
+      for (int c = 0; c < 3; ++c) {
+        out += ' ';
+        appendNumber(out, (*d)[c], 9);
+      }
+    out += '\n';
   }
-  writeFile(path, out.str());
+  writeFile(path, out);
 }
 
 void saveRosy(const SurfaceMesh& mesh, const CrossField& field, const std::string& path) {
   if (field.numFaces() != mesh.numFaces()) throw FieldError("the field does not match the mesh");
-  std::ostringstream out;
-  out << std::setprecision(9) << mesh.numFaces() << "\n4\n";
-  for (int f = 0; f < mesh.numFaces(); ++f)
-    out << field.u[f].x() << ' ' << field.u[f].y() << ' ' << field.u[f].z() << '\n';
-  writeFile(path, out.str());
+  std::string out = std::to_string(mesh.numFaces()) + "\n4\n";
+  for (int f = 0; f < mesh.numFaces(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      if (c > 0) out += ' ';
+      appendNumber(out, field.u[f][c], 9);
+    }
+    out += '\n';
+  }
+  writeFile(path, out);
 }
 
 }  // namespace fcql
