@@ -250,27 +250,35 @@ private:
       auto sing = singularityOfVertex_.find(opposite);
       for (int qa = es.firstSample[ea]; qa < es.firstSample[ea] + es.sampleCount[ea]; ++qa) {
         const Vec3& from = es.samplePosition[qa];
-        for (int j = 0; j < 4; ++j) {
-          int node = g_.edgeNode(qa, sideA, combed(f, j));
-          for (int b = 0; b < 3; ++b) {
-            if (b == a) continue;
-            int eb = mesh_.edgeId(f, b);
-            for (int qb = es.firstSample[eb]; qb < es.firstSample[eb] + es.sampleCount[eb]; ++qb) {
-              Vec3 w = es.samplePosition[qb] - from;
-              if (!withinSector(w, dirs[j])) continue;
+        // Moves to the samples of the two other edges: directions j and j + 2 are opposite,
+        // so one dot product per axis tells which sector (if any) holds the move.
+        for (int b = 0; b < 3; ++b) {
+          if (b == a) continue;
+          int eb = mesh_.edgeId(f, b);
+          for (int qb = es.firstSample[eb]; qb < es.firstSample[eb] + es.sampleCount[eb]; ++qb) {
+            const Vec3 w = es.samplePosition[qb] - from;
+            const double len = w.norm();
+            if (!(len > 0)) continue;
+            const double along[2] = {dirs[0].dot(w), dirs[1].dot(w)};
+            for (int j = 0; j < 4; ++j) {
+              const double dot = j < 2 ? along[j] : -along[j - 2];
+              if (dot < kCos45 * len) continue;
+              const int node = g_.edgeNode(qa, sideA, combed(f, j));
               out.push_back({node, {nodeAcross(f, b, qb, j), float(anisotropicLength(w, dirs[j], alpha))}});
             }
           }
-          // Sink of a port of the singular vertex opposite this edge.
-          if (sing == singularityOfVertex_.end()) continue;
-          Vec3 w = mesh_.position(opposite) - from;
+        }
+        // Sinks of the ports of the singular vertex opposite this edge.
+        if (sing == singularityOfVertex_.end()) continue;
+        const Vec3 w = mesh_.position(opposite) - from;
+        for (int j = 0; j < 4; ++j) {
           if (!withinSector(w, dirs[j])) continue;
           int s = sing->second;
           int k = stars_[s].starIndexOfFace.at(f);
           double unwrapped = 0;
           int p = portAt(s, k, from, &unwrapped);
           if (p < 0 || mod4(carriedPortDirection(p, k, unwrapped) + 2) != j) continue;
-          out.push_back({node, {g_.sinkNode(p), float(anisotropicLength(w, dirs[j], alpha))}});
+          out.push_back({g_.edgeNode(qa, sideA, combed(f, j)), {g_.sinkNode(p), float(anisotropicLength(w, dirs[j], alpha))}});
         }
       }
     }
