@@ -80,9 +80,13 @@ void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h, int threads)
           for (const Piece& piece : perFace[s.face]) {
             if (piece.arc <= a) continue;
             const PathSegment& t = *piece.segment;
+            const unsigned char mark = (s.direction - t.direction) % 2 == 0 ? 3 : 1;
+            // Near a singularity a face holds many paths: test the chords only if meeting
+            // here would tell something not known yet about the pair.
+            if ((met[piece.arc] & mark) == mark) continue;
             if (relateChords(s.from, s.to, t.from, t.to) == ChordRelation::Disjoint) continue;
             if (!met[piece.arc]) others.push_back(piece.arc);
-            met[piece.arc] |= (s.direction - t.direction) % 2 == 0 ? 3 : 1;
+            met[piece.arc] |= mark;
           }
         }
         std::sort(others.begin(), others.end());
