@@ -190,3 +190,34 @@ TEST(Layout, TJunctionsEndOnTheirSeparatrixOnTwoKittens) {
   EXPECT_GT(s->layout.tJunctions, 0);
   for (const auto& p : s->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
 }
+
+#include "layout/separatrix_selection.h"
+
+TEST(Layout, SelectionDropsConflictRowsInsideLargerOnes) {
+  // Four candidates with their own ports. In face 0, candidates 0, 1 and 2 cross pairwise
+  // in the same direction class (one "at most one" clique); in face 1, candidates 0 and 1
+  // cross again (a clique inside the first: it adds nothing and must not become a row); in
+  // face 2, candidates 0 and 3 cross (a row of its own).
+  SeparatrixGraph h;
+  auto candidate = [&](int i, double length, std::vector<PathSegment> segments) {
+    CandidateSeparatrix c;
+    c.portA = 2 * i;
+    c.portB = 2 * i + 1;
+    c.length = length;
+    c.path.segments = std::move(segments);
+    h.arcs.push_back(c);
+  };
+  candidate(0, 1.0, {{0, 0, 0.5, 1.5}, {1, 0, 0.5, 1.5}, {2, 1, 0.5, 1.5}});
+  candidate(1, 2.0, {{0, 2, 0.7, 2.5}, {1, 0, 0.7, 2.5}});
+  candidate(2, 3.0, {{0, 0, 1.2, 2.8}});
+  candidate(3, 1.5, {{2, 3, 0.7, 2.5}});
+  h.arcsAtPort.assign(8, {});
+  for (int i = 0; i < 4; ++i) h.arcsAtPort[2 * i] = h.arcsAtPort[2 * i + 1] = {i};
+  classifyCrossings(makeSphere(1), h);  // any mesh with faces 0..2: the chords are what count
+  ASSERT_EQ(h.tangentialPairs, (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {0, 3}, {1, 2}}));
+  SelectionResult r = selectSeparatrices(h, {}, 10);
+  EXPECT_EQ(r.variables, 4);
+  EXPECT_EQ(r.constraints, 2);  // {0, 1, 2} and {0, 3}
+  // Weights are 1/length: {1, 3} (1/2 + 1/1.5) beats {0} (1) and {2, 3} (1/3 + 1/1.5).
+  EXPECT_EQ(r.selected, (std::vector<int>{1, 3}));
+}

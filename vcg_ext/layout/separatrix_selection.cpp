@@ -29,36 +29,40 @@ std::set<std::vector<int>> conflictCliques(const SeparatrixGraph& h, const std::
       if (s.face >= 0) perFace[s.face].push_back({variableOf[i], &s});
   }
   std::set<std::vector<int>> cliques;
+  std::vector<Piece> group;
+  std::vector<char> meets, covered;  // n × n, reused from face to face
+  std::vector<int> members, vars;
   for (auto& pieces : perFace) {
     if (pieces.size() < 2) continue;
     for (int parity = 0; parity < 2; ++parity) {
-      std::vector<Piece> group;
+      group.clear();
       for (const auto& p : pieces)
         if (p.segment->direction % 2 == parity) group.push_back(p);
       const int n = int(group.size());
       if (n < 2) continue;
-      std::vector<std::vector<char>> meets(n, std::vector<char>(n, 0));
+      meets.assign(std::size_t(n) * n, 0);
+      covered.assign(std::size_t(n) * n, 0);
+      auto at = [n](std::vector<char>& m, int i, int j) -> char& { return m[std::size_t(i) * n + j]; };
       for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j) {
           if (group[i].variable == group[j].variable) continue;
           const auto& s = *group[i].segment;
           const auto& t = *group[j].segment;
-          meets[i][j] = meets[j][i] = relateChords(s.from, s.to, t.from, t.to) != ChordRelation::Disjoint;
+          at(meets, i, j) = at(meets, j, i) = relateChords(s.from, s.to, t.from, t.to) != ChordRelation::Disjoint;
         }
-      std::vector<std::vector<char>> covered(n, std::vector<char>(n, 0));
       for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j) {
-          if (!meets[i][j] || covered[i][j]) continue;
-          std::vector<int> members = {i, j};
+          if (!at(meets, i, j) || at(covered, i, j)) continue;
+          members = {i, j};
           for (int k = 0; k < n; ++k) {
             if (k == i || k == j) continue;
             bool all = true;
-            for (int m : members) all = all && meets[k][m];
+            for (int m : members) all = all && at(meets, k, m);
             if (all) members.push_back(k);
           }
           for (int a : members)
-            for (int b : members) covered[a][b] = 1;
-          std::vector<int> vars;
+            for (int b : members) at(covered, a, b) = 1;
+          vars.clear();
           for (int m : members) vars.push_back(group[m].variable);
           std::sort(vars.begin(), vars.end());
           vars.erase(std::unique(vars.begin(), vars.end()), vars.end());
@@ -69,10 +73,42 @@ std::set<std::vector<int>> conflictCliques(const SeparatrixGraph& h, const std::
   return cliques;
 }
 
+/// Drops the rows contained in another row: every row says "at most one of these", so a
+/// row inside a larger one adds nothing (cliques of neighbouring triangles often nest; on
+/// fertility half of the rows). Rows are sorted sets of variables; the order of the kept ones
+/// is unchanged.
+std::vector<std::vector<int>> withoutContainedRows(const std::vector<std::vector<int>>& rows, int numVariables) {
+  std::vector<int> order(rows.size());
+  for (int r = 0; r < int(rows.size()); ++r) order[r] = r;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return rows[a].size() > rows[b].size(); });
+  std::vector<std::vector<int>> rowsWith(numVariables);  // kept rows holding each variable
+  std::vector<char> keep(rows.size(), 0);
+  for (int r : order) {
+    const std::vector<int>& row = rows[r];
+    int rarest = row[0];
+    for (int v : row)
+      if (rowsWith[v].size() < rowsWith[rarest].size()) rarest = v;
+    bool contained = false;
+    for (int k : rowsWith[rarest])
+      if (k != r && std::includes(rows[k].begin(), rows[k].end(), row.begin(), row.end())) {
+        contained = true;
+        break;
+      }
+    if (contained) continue;
+    keep[r] = 1;
+    for (int v : row) rowsWith[v].push_back(r);
+  }
+  std::vector<std::vector<int>> kept;
+  for (int r = 0; r < int(rows.size()); ++r)
+    if (keep[r]) kept.push_back(rows[r]);
+  return kept;
+}
+
 }  // namespace
 
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds) {
   SelectionResult out;
+  const auto start = std::chrono::steady_clock::now();  // the program's construction counts too
   auto free = [&](int p) { return portFree.empty() || (p >= 0 && p < int(portFree.size()) && portFree[p]); };
   // Scale the objective so that coefficients are near 1 whatever the mesh units.
   double meanLength = 0;
@@ -97,9 +133,11 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     std::vector<int> row;
     for (int a : h.arcsAtPort[p])
       if (variableOf[a] >= 0) row.push_back(variableOf[a]), portsOfVariable[variableOf[a]].push_back(p);
+    std::sort(row.begin(), row.end());
     if (row.size() > 1) rows.push_back(std::move(row));
   }
   for (const auto& clique : conflictCliques(h, variableOf)) rows.push_back(clique);
+  rows = withoutContainedRows(rows, n);
   out.variables = n;
   out.constraints = int(rows.size());
 
@@ -135,7 +173,6 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     return objective;
   };
 
-  auto start = std::chrono::steady_clock::now();
   int usedGreedy = 0, parts = 0;
   for (int root = 0; root < n; ++root) {
     const auto& vars = members[root];
