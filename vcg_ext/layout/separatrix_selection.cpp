@@ -1,8 +1,10 @@
 #include "layout/separatrix_selection.h"
 
 #include "mesh/union_find.h"
+#include "mesh/worker_threads.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <set>
 #include <stdexcept>
@@ -10,15 +12,66 @@
 namespace fcql {
 namespace {
 
-/// Conflict cliques: within one triangle, candidate segments of the same direction parity
-/// that pairwise meet can hold at most one selected separatrix. A greedy clique cover of these
-/// conflicts gives constraints that imply every pairwise Eq. 3 inside the triangle and make the
-/// LP relaxation much tighter than the pairs alone.
-std::set<std::vector<int>> conflictCliques(const SeparatrixGraph& h, const std::vector<int>& variableOf) {
-  struct Piece {
-    int variable;
-    const PathSegment* segment;
-  };
+/// A piece of a candidate inside one triangle, as a variable of the program.
+struct Piece {
+  int variable;
+  const PathSegment* segment;
+};
+
+using Cliques = std::set<std::vector<int>>;
+
+/// Working memory of addTriangleCliques, reused from triangle to triangle.
+struct CliqueScratch {
+  std::vector<Piece> group;
+  std::vector<char> meets, covered;  // n × n
+  std::vector<int> members, vars;
+};
+
+/// Adds the conflict cliques of one triangle's pieces: pieces of the same direction parity
+/// that pairwise meet can hold at most one selected separatrix. A greedy cover: each pair
+/// that meets and is not covered yet grows into a clique of all pieces meeting its members.
+void addTriangleCliques(const std::vector<Piece>& pieces, CliqueScratch& w, Cliques& cliques) {
+  for (int parity = 0; parity < 2; ++parity) {
+    w.group.clear();
+    for (const auto& p : pieces)
+      if (p.segment->direction % 2 == parity) w.group.push_back(p);
+    const int n = int(w.group.size());
+    if (n < 2) continue;
+    w.meets.assign(std::size_t(n) * n, 0);
+    w.covered.assign(std::size_t(n) * n, 0);
+    auto at = [n](std::vector<char>& m, int i, int j) -> char& { return m[std::size_t(i) * n + j]; };
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        if (w.group[i].variable == w.group[j].variable) continue;
+        const auto& s = *w.group[i].segment;
+        const auto& t = *w.group[j].segment;
+        at(w.meets, i, j) = at(w.meets, j, i) = relateChords(s.from, s.to, t.from, t.to) != ChordRelation::Disjoint;
+      }
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        if (!at(w.meets, i, j) || at(w.covered, i, j)) continue;
+        w.members = {i, j};
+        for (int k = 0; k < n; ++k) {
+          if (k == i || k == j) continue;
+          bool all = true;
+          for (int m : w.members) all = all && at(w.meets, k, m);
+          if (all) w.members.push_back(k);
+        }
+        for (int a : w.members)
+          for (int b : w.members) at(w.covered, a, b) = 1;
+        w.vars.clear();
+        for (int m : w.members) w.vars.push_back(w.group[m].variable);
+        std::sort(w.vars.begin(), w.vars.end());
+        w.vars.erase(std::unique(w.vars.begin(), w.vars.end()), w.vars.end());
+        if (w.vars.size() >= 2) cliques.insert(w.vars);
+      }
+  }
+}
+
+/// Conflict cliques of every triangle. Together they imply every pairwise Eq. 3 and make the
+/// LP relaxation much tighter than the pairs alone. Triangles are shared out in blocks among
+/// the threads, each with its own set: the union does not depend on who found what.
+Cliques conflictCliques(const SeparatrixGraph& h, const std::vector<int>& variableOf) {
   int maxFace = -1;
   for (const auto& a : h.arcs)
     for (const auto& s : a.path.segments) maxFace = std::max(maxFace, s.face);
@@ -28,48 +81,21 @@ std::set<std::vector<int>> conflictCliques(const SeparatrixGraph& h, const std::
     for (const auto& s : h.arcs[i].path.segments)
       if (s.face >= 0) perFace[s.face].push_back({variableOf[i], &s});
   }
-  std::set<std::vector<int>> cliques;
-  std::vector<Piece> group;
-  std::vector<char> meets, covered;  // n × n, reused from face to face
-  std::vector<int> members, vars;
-  for (auto& pieces : perFace) {
-    if (pieces.size() < 2) continue;
-    for (int parity = 0; parity < 2; ++parity) {
-      group.clear();
-      for (const auto& p : pieces)
-        if (p.segment->direction % 2 == parity) group.push_back(p);
-      const int n = int(group.size());
-      if (n < 2) continue;
-      meets.assign(std::size_t(n) * n, 0);
-      covered.assign(std::size_t(n) * n, 0);
-      auto at = [n](std::vector<char>& m, int i, int j) -> char& { return m[std::size_t(i) * n + j]; };
-      for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j) {
-          if (group[i].variable == group[j].variable) continue;
-          const auto& s = *group[i].segment;
-          const auto& t = *group[j].segment;
-          at(meets, i, j) = at(meets, j, i) = relateChords(s.from, s.to, t.from, t.to) != ChordRelation::Disjoint;
-        }
-      for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j) {
-          if (!at(meets, i, j) || at(covered, i, j)) continue;
-          members = {i, j};
-          for (int k = 0; k < n; ++k) {
-            if (k == i || k == j) continue;
-            bool all = true;
-            for (int m : members) all = all && at(meets, k, m);
-            if (all) members.push_back(k);
-          }
-          for (int a : members)
-            for (int b : members) at(covered, a, b) = 1;
-          vars.clear();
-          for (int m : members) vars.push_back(group[m].variable);
-          std::sort(vars.begin(), vars.end());
-          vars.erase(std::unique(vars.begin(), vars.end()), vars.end());
-          if (vars.size() >= 2) cliques.insert(vars);
-        }
-    }
-  }
+  const int numFaces = int(perFace.size());
+  const int blockSize = 256;
+  const int numBlocks = (numFaces + blockSize - 1) / blockSize;
+  const int threads = workerThreadCount(0, numBlocks);
+  std::vector<Cliques> found(threads);
+  std::atomic<int> nextBlock{0};
+  auto work = [&](int thread) {
+    CliqueScratch scratch;
+    for (int block; (block = nextBlock.fetch_add(1)) < numBlocks;)
+      for (int f = block * blockSize, end = std::min(numFaces, f + blockSize); f < end; ++f)
+        if (perFace[f].size() >= 2) addTriangleCliques(perFace[f], scratch, found[thread]);
+  };
+  runOnWorkerThreads(threads, work);
+  Cliques cliques;
+  for (Cliques& c : found) cliques.merge(c);
   return cliques;
 }
 
