@@ -153,8 +153,11 @@ done
   node per auxiliary point, incident triangle and unoccluded direction (up to six per point,
   §3.2), at the points the φ rule needs (each pair of consecutive points subtends less than φ
   at the opposite vertex of both incident triangles; placed by a greedy walk, 17–33% fewer
-  than equal steps). The paper's count is probably of another unit (points, or nodes without
-  the occluded directions); paths and layouts do not depend on it.
+  than equal steps). The paper's |G| matches twice our auxiliary points, one per point and
+  incident triangle, without the directions: fertility (28K faces in both) 2 × 246,253 =
+  492.5K against 492K, bunny 2 × 273,002 = 546K against 528K (30K faces there, 27.9K here).
+  So the graphs are the same size, counted in different units; paths and layouts do not
+  depend on the count.
 - **Patches and t-junctions**: the paper's layouts come from its own fields, ours from fields
   fcql computes (curvature-aligned, smoothed), except dragon, eight and lilium, which ship a
   field. Different fields have different singularities (bunny: 38 here), hence different
@@ -162,15 +165,16 @@ done
   field has 795 singularities, so its layout has several times the paper's 1024 patches.
 - **Time**: the paper's Table 1 times the layout from a given field (its stages: graph G,
   tracing, the 0-1 programs with the solving cycle, propagation); the *layout* column adds up
-  those stages here (plus the cut into patches), *total* is the whole `fcql run` with the field,
-  the quad mesh, its measurements and the output files. The last column divides the paper's
-  time by ours. The tracing (a Dijkstra search from every port until k sinks are reached)
-  dominates where k = 30. The issue's target, 10× below the paper's time, is met on rockerarm
-  only (16× on the layout, 10.5× on the whole run; the comparison is unfair the other way: our
-  rockerarm has 20K faces, the paper's 70K); bunny and fertility are 4.8–6.5× below on the
-  layout, 3.4–5.3× on the whole run. Times vary by 10–25% from run to run on this machine (a
-  shared virtual machine: fertility's layout took 5.0 s in one bench run and 6.0 s in the next
-  with the same code).
+  those stages here (plus the cut into patches; the 0-1 programs include building their
+  conflict cliques), *total* is the whole `fcql run` with the field, the quad mesh, its
+  measurements and the output files (`time_s.output`, about 0.2–0.3 s: candidates.obj alone
+  is 26 MB on the bunny). The last column divides the paper's time by ours. The tracing (a
+  Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
+  issue's target, 10× below the paper's time, is met on rockerarm only (17× on the layout,
+  10× on the whole run; the comparison is unfair the other way: our rockerarm has 20K faces,
+  the paper's 70K); bunny and fertility are 6–8× below on the layout, 4–6× on the whole run.
+  Times vary by 10–40% from run to run on this machine (a shared virtual machine: the bunny's
+  whole run took 3.7 s in the before/after below and 4.4 s in this table, with the same code).
 - **Quality**: every finished mesh but the dragon's is within 1% of the diagonal (the quad
   stage samples again with smaller quads where it is not). Misalignment is high on the open
   surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
@@ -297,6 +301,37 @@ makes lp_solve return another solution within its 1% gap):
 | fandisk (α 20, k 10) | 1.23 → 0.49 s (2.5×) | 0.25 → 0.04 s | 2.61 → 1.58 s (1.7×) |
 
 The unit and end-to-end tests (`ctest`) fell from about 4 minutes to 40 s with them.
+
+Next (2026-12-02), with the same outputs byte for byte on every mesh checked (candidates,
+separatrices, layouts; bunny, fertility, kitten, camelhead, aqua_center, fandisk, deckel,
+lilium, rockerarm):
+- Tracing: `perf annotate` still put half of the search on three loads (a settled node's arc
+  range and first arc, its targets' distances). A node's arcs are now prefetched when it is
+  first reached, long before it is popped, and before relaxing a node's arcs the search
+  prefetches its targets' records and arc ranges, so the misses overlap instead of waiting
+  one by one behind the relaxations' branches. Arcs into edge nodes without arcs out (10% of
+  the pops on the bunny) are flagged like arcs into border terminals and skipped. Bunny, one
+  thread, best of 3: 5.85 → 3.96 s. Carrying the predecessor in the heap entry and keeping
+  the heap position beside the distance (one random access fewer per decrease) gained
+  nothing measurable and was not kept.
+- Graph G: one norm and two dot products decide the sector of a move for all four
+  directions (j and j + 2 are exact opposites): building G 0.54 → 0.41 s on the bunny.
+- Graph H: a pair of candidates already known to meet tangentially skips further chord tests.
+- 0-1 programs: rows contained in another row are dropped (conflict cliques of neighbouring
+  triangles nest; every row says "at most one of these"): fertility's 7566 rows become 3925
+  and lp_solve takes 0.59 s instead of 1.14 s; the dragon's LP relaxation 15 s instead of 22
+  s (its program still reaches the 60 s limit). The cliques are built on both threads.
+- Output files: numbers written with `std::to_chars` instead of streams (3% of the run).
+
+Before (commit 8a1343b) and after, `fcql run` alternating in one session, best of 2
+(*0-1* includes the conflict cliques after, not before; *run* is the wall clock of the
+whole command, output files included):
+
+| mesh | graph | tracing | 0-1 | run |
+|---|---:|---:|---:|---:|
+| bunny (α 15, k 30) | 0.46 → 0.42 s | 2.55 → 1.86 s (1.37×) | 0.30 → 0.26 s | 5.03 → 3.68 s (1.37×) |
+| fertility (α 30, k 30) | 0.40 → 0.40 s | 2.80 → 1.76 s (1.59×) | 1.06 → 0.76 s | 6.77 → 4.68 s (1.45×) |
+| rockerarm (α 30, k 30) | 0.37 → 0.34 s | 1.76 → 1.24 s (1.42×) | 0.20 → 0.25 s | 4.79 → 3.65 s (1.31×) |
 NOTES
   if [ ${#pictures[@]} -gt 0 ]; then
     echo
