@@ -170,11 +170,11 @@ done
   measurements and the output files (`time_s.output`, about 0.2–0.3 s: candidates.obj alone
   is 26 MB on the bunny). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
-  issue's target, 10× below the paper's time, is met on rockerarm only (17× on the layout,
+  issue's target, 10× below the paper's time, is met on rockerarm only (16× on the layout,
   10× on the whole run; the comparison is unfair the other way: our rockerarm has 20K faces,
   the paper's 70K); bunny and fertility are 6–8× below on the layout, 4–6× on the whole run.
   Times vary by 10–40% from run to run on this machine (a shared virtual machine: the bunny's
-  whole run took 3.7 s in the before/after below and 4.4 s in this table, with the same code).
+  whole run took 3.7 s in the before/after below and 4.6 s in this table, with the same code).
 - **Quality**: every finished mesh but the dragon's is within 1% of the diagonal (the quad
   stage samples again with smaller quads where it is not). Misalignment is high on the open
   surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
