@@ -322,6 +322,16 @@ lilium, rockerarm):
   and lp_solve takes 0.59 s instead of 1.14 s; the dragon's LP relaxation 15 s instead of 22
   s (its program still reaches the 60 s limit). The cliques are built on both threads.
 - Output files: numbers written with `std::to_chars` instead of streams (3% of the run).
+- Tried for quality and not kept: mapping each patch's interior again by least squares so
+  that the gradients of u and v follow the cross field (the field direction nearest to the
+  mean-value map's gradient in each triangle, with its length; the boundary kept; dropped
+  where a triangle would fold, which never happened). It moved the misaligned quads by only
+  0.3–1.7 points (bunny 31.1 → 29.4% before smoothing, 29.1 → 28.7% after; fertility 19.5 →
+  19.2%; joint 17.9 → 17.6%) for a 20% slower quad stage, and changed rockerarm's
+  refinements (8187 → 8889 quads, scaled Jacobian −0.03 → −0.07). The misalignment does not
+  come from the patch interiors: it comes from their boundaries (sides sampled by arc length
+  from both ends, separatrices drifting as far as α lets them) and from the metric, which
+  takes the worse of a quad's two directions, so a sheared quad counts.
 
 Before (commit 8a1343b) and after, `fcql run` alternating in one session, best of 2
 (*0-1* includes the conflict cliques after, not before; *run* is the wall clock of the
