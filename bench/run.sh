@@ -220,7 +220,7 @@ done
   side-length part after the zero-chain splits (118 variables) needs about 3 s of branch and
   bound: stopped at 2 s as it was, lp_solve kept whatever it held then and the quads varied
   from run to run (8210–8530 at one target edge; rounding the relaxation gets stuck on its
-  equalities there). Parts of up to 1000 variables now get up to 30 s, and it gives the same
+  equalities there). Parts of up to 1000 variables now get up to 10 s, and it gives the same
   6050 quads on every run; larger parts (the dragon's) still stop at 2 s, so only the
   dragon's figures vary. Where branch and bound finishes the output is the same on
   every run. Six variants of kitten and fandisk (scaled by 10⁻⁶ and 10⁶, rotated, noisy,
@@ -322,6 +322,12 @@ lilium, rockerarm):
   and lp_solve takes 0.59 s instead of 1.14 s; the dragon's LP relaxation 15 s instead of 22
   s (its program still reaches the 60 s limit). The cliques are built on both threads.
 - Output files: numbers written with `std::to_chars` instead of streams (3% of the run).
+- Side lengths: branch and bound gets up to 10 s per part of at most 1000 variables instead
+  of 30 s. A sweep of α, k and φ over the smaller meshes found three runs of 40–62 s (deckel
+  at φ = 5° and 25°, kitten at α = 0, k = 1), each a soft part whose LP bound lies far below
+  any integer solution (deckel: bound 17939, lp_solve's first solution 35399, never improved
+  in 30 s, the rounded relaxation 33620): the same quads now in 21–22 s. The 111K-face
+  bunny's part still finishes (same quad.obj).
 - Tried for quality and not kept: mapping each patch's interior again by least squares so
   that the gradients of u and v follow the cross field (the field direction nearest to the
   mean-value map's gradient in each triangle, with its length; the boundary kept; dropped
