@@ -60,7 +60,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   const int numPorts = int(graph.ports().size());
 
   // 1. The first 0-1 program on all candidates.
-  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit);
+  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, graph.parameters().threads);
   noteSelection(layout, first);
   for (int a : first.selected) {
     const auto& c = candidates.arcs[a];
@@ -91,7 +91,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
-    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit);
+    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, graph.parameters().threads);
     noteSelection(layout, r);
     if (r.selected.empty()) break;
     for (int a : r.selected) {

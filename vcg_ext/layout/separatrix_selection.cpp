@@ -71,7 +71,7 @@ void addTriangleCliques(const std::vector<Piece>& pieces, CliqueScratch& w, Cliq
 /// Conflict cliques of every triangle. Together they imply every pairwise Eq. 3 and make the
 /// LP relaxation much tighter than the pairs alone. Triangles are shared out in blocks among
 /// the threads, each with its own set: the union does not depend on who found what.
-Cliques conflictCliques(const SeparatrixGraph& h, const std::vector<int>& variableOf) {
+Cliques conflictCliques(const SeparatrixGraph& h, const std::vector<int>& variableOf, int requestedThreads) {
   int maxFace = -1;
   for (const auto& a : h.arcs)
     for (const auto& s : a.path.segments) maxFace = std::max(maxFace, s.face);
@@ -84,7 +84,7 @@ Cliques conflictCliques(const SeparatrixGraph& h, const std::vector<int>& variab
   const int numFaces = int(perFace.size());
   const int blockSize = 256;
   const int numBlocks = (numFaces + blockSize - 1) / blockSize;
-  const int threads = workerThreadCount(0, numBlocks);
+  const int threads = workerThreadCount(requestedThreads, numBlocks);
   std::vector<Cliques> found(threads);
   std::atomic<int> nextBlock{0};
   auto work = [&](int thread) {
@@ -132,7 +132,8 @@ std::vector<std::vector<int>> withoutContainedRows(const std::vector<std::vector
 
 }  // namespace
 
-SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds) {
+SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
+                                   int threads) {
   SelectionResult out;
   const auto start = std::chrono::steady_clock::now();  // the program's construction counts too
   auto free = [&](int p) { return portFree.empty() || (p >= 0 && p < int(portFree.size()) && portFree[p]); };
@@ -162,7 +163,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     std::sort(row.begin(), row.end());
     if (row.size() > 1) rows.push_back(std::move(row));
   }
-  for (const auto& clique : conflictCliques(h, variableOf)) rows.push_back(clique);
+  for (const auto& clique : conflictCliques(h, variableOf, threads)) rows.push_back(clique);
   rows = withoutContainedRows(rows, n);
   out.variables = n;
   out.constraints = int(rows.size());

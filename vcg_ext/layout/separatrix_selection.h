@@ -22,7 +22,8 @@ struct SelectionResult {
 /// `portFree[p]` = 1 if port p may receive a separatrix (empty: all ports). Arcs touching a
 /// port that is not free are left out. Throws std::runtime_error with lp_solve's reason if no
 /// solution could be found (the empty selection is always feasible, so this means a solver
-/// failure).
-SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds);
+/// failure). The conflict cliques are found on `threads` threads (0: all hardware threads).
+SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
+                                   int threads = 0);
 
 }  // namespace fcql

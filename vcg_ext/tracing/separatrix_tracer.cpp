@@ -297,8 +297,9 @@ public:
           if (std::isinf(old)) {
             heap.push({nd, v});
             __builtin_prefetch(g_.arcsBegin(v));  // long before v is popped
+          } else {
+            heap.decrease(old, {nd, v});
           }
-          else heap.decrease(old, {nd, v});
         }
       }
     }
