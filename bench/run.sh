@@ -223,7 +223,14 @@ done
   equalities there). Parts of up to 1000 variables now get up to 10 s, and it gives the same
   6050 quads on every run; larger parts (the dragon's) still stop at 2 s, so only the
   dragon's figures vary. Where branch and bound finishes the output is the same on
-  every run. Six variants of kitten and fandisk (scaled by 10⁻⁶ and 10⁶, rotated, noisy,
+  every run. A sweep of parameters over the 7 smaller meshes (α 5/40/20/20/0, k 3/20/10/10/1,
+  φ 10/10/5/25/10: 35 runs): 34 give a pure-quad, manifold mesh of the input's genus and
+  borders; aqua_center at α 0, k 1 stops with a clear error (a 3-corner and a 5-corner layout
+  patch, whose zero-chain splits do not converge in 8 rounds). Layouts with invalid patches in
+  3 runs (lilium at α 5, k 3 and at φ 25, camelhead at α 0, k 1; on lilium at α 5, k 3 a
+  6-triangle 3-corner patch between a separatrix, the border and a 5-corner patch; their
+  quads are still cut),
+  and deckel at α 0, k 1 ends 1.95% from the surface after the 4 finer passes. Six variants of kitten and fandisk (scaled by 10⁻⁶ and 10⁶, rotated, noisy,
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
