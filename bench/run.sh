@@ -333,8 +333,8 @@ lilium, rockerarm):
   of 30 s. A sweep of α, k and φ over the smaller meshes found three runs of 40–62 s (deckel
   at φ = 5° and 25°, kitten at α = 0, k = 1), each a soft part whose LP bound lies far below
   any integer solution (deckel: bound 17939, lp_solve's first solution 35399, never improved
-  in 30 s, the rounded relaxation 33620): the same quads now in 21–22 s. The 111K-face
-  bunny's part still finishes (same quad.obj).
+  in 30 s, the rounded relaxation 33620): the same quads now in 21–22 s, and deckel at α 0,
+  k 1 in 64 s instead of 184 s. The 111K-face bunny's part still finishes (same quad.obj).
 - Tried for quality and not kept: mapping each patch's interior again by least squares so
   that the gradients of u and v follow the cross field (the field direction nearest to the
   mean-value map's gradient in each triangle, with its length; the boundary kept; dropped
