@@ -28,14 +28,26 @@ double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, 
 double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
                          const std::vector<Vec3>& surfacePoints) {
   const auto& P = quads.positions;
+  if (quads.quads.empty()) return std::numeric_limits<double>::infinity();
+  // Quad mesh → surface: every quad's centre, corners and edge midpoints, each point measured
+  // once (a corner is shared by about four quads, an edge by two).
+  std::vector<char> corner(P.size(), 0);
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(4 * quads.quads.size());
   double toSurface = 0;
   for (const auto& f : quads.quads) {
     toSurface = std::max(toSurface, surfaceIndex.closest((P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4).distance);
-    for (int i = 0; i < 4; ++i)
-      toSurface = std::max({toSurface, surfaceIndex.closest(P[f[i]]).distance,
-                            surfaceIndex.closest((P[f[i]] + P[f[(i + 1) % 4]]) / 2).distance});
+    for (int i = 0; i < 4; ++i) {
+      corner[f[i]] = 1;
+      edges.push_back(std::minmax(f[i], f[(i + 1) % 4]));
+    }
   }
-  if (quads.quads.empty()) return std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < P.size(); ++v)
+    if (corner[v]) toSurface = std::max(toSurface, surfaceIndex.closest(P[v]).distance);
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (const auto& e : edges)
+    toSurface = std::max(toSurface, surfaceIndex.closest((P[e.first] + P[e.second]) / 2).distance);
   // Surface → quad mesh, each quad split along its shorter diagonal.
   std::vector<std::array<int, 3>> triangles;
   triangles.reserve(2 * quads.quads.size());
