@@ -47,6 +47,11 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
   const PatchReport& rep = layout.patches[patch];
   for (int k = 0; k < int(rep.loop.size()); ++k)
     uv_[wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k]))] = boundaryUv(k);
+  mapInterior();
+  indexTriangles();
+}
+
+void PatchMap::mapInterior() {
   // Interior wedges: mean-value weights, w_ab = (tan(α/2) + tan(β/2)) / |ab| summed per triangle.
   std::unordered_map<int, int> interior;
   std::vector<int> interiorWedge;
@@ -64,14 +69,14 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ni, 2);
   std::vector<double> diagonal(ni, 0);
   for (int t : triangles_) {
-    const auto& tri = layout.triangles[t];
+    const auto& tri = layout_.triangles[t];
     for (int c = 0; c < 3; ++c) {
       auto it = interior.find(wedge(t, c));
       if (it == interior.end()) continue;
-      const Vec3& pa = layout.positions[tri[c]];
+      const Vec3& pa = layout_.positions[tri[c]];
       for (int other : {1, 2}) {
         int cb = (c + other) % 3, cd = (c + 3 - other) % 3;
-        Vec3 eb = layout.positions[tri[cb]] - pa, ed = layout.positions[tri[cd]] - pa;
+        Vec3 eb = layout_.positions[tri[cb]] - pa, ed = layout_.positions[tri[cd]] - pa;
         double angle = std::atan2(eb.cross(ed).norm(), eb.dot(ed));
         double w = std::tan(angle / 2) / std::max(eb.norm(), 1e-300);
         diagonal[it->second] += w;
@@ -87,12 +92,12 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
   A.setFromTriplets(entries.begin(), entries.end());
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
   solver.compute(A);
-  if (solver.info() != Eigen::Success) throw std::runtime_error("patch " + std::to_string(patch) + ": its mapping failed");
+  if (solver.info() != Eigen::Success) throw std::runtime_error("patch " + std::to_string(patch_) + ": its mapping failed");
   Eigen::MatrixXd uv = solver.solve(rhs);
   for (int i = 0; i < ni; ++i) uv_[interiorWedge[i]] = Vec2(uv(i, 0), uv(i, 1));
 }
 
-void PatchMap::indexTriangles() const {
+void PatchMap::indexTriangles() {
   // The triangles' images, once, and a grid over their bounding box listing each triangle in
   // the cells its bounding box covers (about one triangle per cell): a query looks at the few
   // triangles of its cell instead of all of the patch's.
@@ -105,7 +110,6 @@ void PatchMap::indexTriangles() const {
       lo = lo.cwiseMin(corners_[k][c]);
       hi = hi.cwiseMax(corners_[k][c]);
     }
-  indexed_ = true;
   if (n == 0 || !(hi.x() >= lo.x()) || !(hi.y() >= lo.y())) return;
   gridLow_ = lo;
   gridHigh_ = hi;
@@ -135,7 +139,6 @@ int PatchMap::cellCoordinate(double value, int axis) const {
 }
 
 Vec3 PatchMap::pointAt(const Vec2& x) const {
-  if (!indexed_) indexTriangles();
   int best = -1;
   double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
   // Barycentric coordinates of x in triangle k (of triangles_); false if it is degenerate.

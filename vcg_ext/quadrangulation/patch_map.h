@@ -33,7 +33,10 @@ public:
 
 private:
   int wedge(int t, int c) const;
-  void indexTriangles() const;
+  /// The images of the interior wedges (mean-value coordinates), the boundary's being set.
+  void mapInterior();
+  /// Per triangle its corners' images, and the grid over them that pointAt() searches.
+  void indexTriangles();
   int cellCoordinate(double value, int axis) const;
 
   const PatchLayout& layout_;
@@ -43,13 +46,12 @@ private:
   mutable std::vector<int> parent_;
   mutable int outside_ = 0;
   std::unordered_map<int, Vec2> uv_;
-  // Built by the first pointAt(): per triangle (in triangles_' order) its corners' images, and
-  // a grid of gridN_ × gridN_ cells over them listing the triangles whose box meets each cell.
-  mutable bool indexed_ = false;
-  mutable std::vector<std::array<Vec2, 3>> corners_;
-  mutable Vec2 gridLow_ = Vec2::Zero(), gridHigh_ = Vec2::Zero(), gridStep_ = Vec2::Ones();
-  mutable int gridN_ = 0;
-  mutable std::vector<int> cellBegin_, cellTriangles_;
+  // Per triangle (in triangles_' order) its corners' images, and a grid of gridN_ × gridN_
+  // cells over them listing the triangles whose box meets each cell.
+  std::vector<std::array<Vec2, 3>> corners_;
+  Vec2 gridLow_ = Vec2::Zero(), gridHigh_ = Vec2::Zero(), gridStep_ = Vec2::Ones();
+  int gridN_ = 0;
+  std::vector<int> cellBegin_, cellTriangles_;
 };
 
 }  // namespace fcql

@@ -31,7 +31,7 @@ struct SideLengths {
 };
 
 /// `timeLimitSeconds` bounds the whole; within what is left of it, branch and bound gets up
-/// to 30 s for a part of at most 1000 variables (so that it finishes and the same input gives
+/// to 10 s for a part of at most 1000 variables (so that it finishes and the same input gives
 /// the same counts on every run) and 2 s for a larger one, whose relaxation is then rounded
 /// too (the better solution is kept). Throws std::runtime_error if lp_solve fails even on the
 /// LP relaxation. Patches with forceEqual get hard equalities; if that makes the program
