@@ -49,6 +49,28 @@ double distanceToPath(const Vec3& x, const TracedPath& path) {
   return best;
 }
 
+/// Distance between segments [p0, p1] and [q0, q1]: the closest pair of points, found by
+/// clamping the parameters of one segment and reprojecting onto the other.
+double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  auto onQ = [&](const Vec3& x) { return e > 0 ? std::clamp((x - q0).dot(d2) / e, 0.0, 1.0) : 0.0; };
+  auto onP = [&](const Vec3& x) { return a > 0 ? std::clamp((x - p0).dot(d1) / a, 0.0, 1.0) : 0.0; };
+  double s = 0, t = 0;
+  const double b = d1.dot(d2), c = d1.dot(r), denom = a * e - b * b;
+  if (denom > 1e-14 * a * e) s = std::clamp((b * f - c * e) / denom, 0.0, 1.0);
+  t = e > 0 ? (b * s + f) / e : 0.0;
+  if (t < 0 || t > 1) {
+    t = std::clamp(t, 0.0, 1.0);
+    s = onP(q0 + d2 * t);
+  }
+  double best = (p0 + d1 * s - q0 - d2 * t).norm();
+  // The endpoints against the other segment cover parallel and degenerate cases.
+  for (const Vec3& x : {p0, p1}) best = std::min(best, (x - q0 - d2 * onQ(x)).norm());
+  for (const Vec3& x : {q0, q1}) best = std::min(best, (x - p0 - d1 * onP(x)).norm());
+  return best;
+}
+
 /// The properties every layout must have: at most one separatrix per port, no tangential
 /// crossing between any two separatrices, every t-junction on the separatrix it ends at.
 void checkLayoutInvariants(const Solved& s) {
@@ -70,13 +92,27 @@ void checkLayoutInvariants(const Solved& s) {
   const auto& seps = s.layout.separatrices;
   for (std::size_t i = 0; i < seps.size(); ++i)
     for (std::size_t j = i + 1; j < seps.size(); ++j)
-      for (const auto& a : seps[i].path.segments)
-        for (const auto& b : seps[j].path.segments)
-          if (a.face == b.face && relateChords(a.from, a.to, b.from, b.to) != ChordRelation::Disjoint)
-            EXPECT_NE((a.direction - b.direction) % 2, 0) << "separatrices " << i << " and " << j << " cross tangentially";
+      for (std::size_t ka = 0; ka < seps[i].path.segments.size(); ++ka)
+        for (std::size_t kb = 0; kb < seps[j].path.segments.size(); ++kb) {
+          const PathSegment &a = seps[i].path.segments[ka], &b = seps[j].path.segments[kb];
+          if (a.face != b.face || relateChords(a.from, a.to, b.from, b.to) == ChordRelation::Disjoint) continue;
+          if ((a.direction - b.direction) % 2 != 0) continue;
+          const double gap = segmentDistance(seps[i].path.points[ka].position, seps[i].path.points[ka + 1].position,
+                                             seps[j].path.points[kb].position, seps[j].path.points[kb + 1].position);
+          EXPECT_GT(gap, 1e-9 * scale) << "separatrices " << i << " and " << j << " cross tangentially in face " << a.face;
+        }
 }
 
 }  // namespace
+
+TEST(Layout, SegmentDistanceOfTheInvariantCheck) {
+  // The tangential-crossing check above relies on it: crossing segments are at distance 0.
+  EXPECT_NEAR(segmentDistance(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, 0)), 0, 1e-15);
+  EXPECT_NEAR(segmentDistance(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0.5, 0), Vec3(3, 0.5, 0)), 0.5, 1e-15);
+  EXPECT_NEAR(segmentDistance(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, -1, 0), Vec3(2, 1, 0)), 1, 1e-15);
+  EXPECT_NEAR(segmentDistance(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0, 1), Vec3(0.5, 0, 3)), 1, 1e-15);
+  EXPECT_NEAR(segmentDistance(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)), 0, 1e-15);
+}
 
 TEST(Layout, CubeGivesSixQuadPatches) {
   SurfaceMesh m = test::sharpCube(6);
@@ -116,6 +152,22 @@ TEST(Layout, EightPatchesAreQuadDisks) {
             << histogram << ", invalid " << s->patches.numInvalidPatches() << std::endl;
   for (const auto& p : s->patches.patches) EXPECT_TRUE(p.isDisk) << p.problem;
   EXPECT_EQ(s->patches.numInvalidPatches(), 0);
+}
+
+TEST(Layout, BorderSeparatricesDoNotCutSliversOffTheLilium) {
+  // With alpha 5 and k 3 a border singularity's separatrix once ran along the lilium's border
+  // and met it at 13°: a 6-triangle patch with 3 corners between them, and a 5-corner patch
+  // beside it. Paths now end on the border only across it.
+  FCQL_REQUIRE_SHARED(obj, "lilium.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("lilium.ffield"));
+  TracingParameters tp;
+  tp.alpha = 5;
+  tp.k = 3;
+  auto s = solve(m, f, tp);
+  checkLayoutInvariants(*s);
+  EXPECT_GT(s->layout.borderConnections, 0);
+  for (const auto& p : s->patches.patches) EXPECT_TRUE(p.valid) << p.triangles << " triangles: " << p.problem;
 }
 
 #include "field/field_generation.h"

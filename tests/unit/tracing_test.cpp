@@ -205,6 +205,44 @@ TEST(Tracing, ArcsIntoDeadEndsAreMarkedAndNoOthers) {
   EXPECT_GT(stuck, 0);
 }
 
+TEST(Tracing, PathsEndOnTheBorderOnlyAcrossIt) {
+  // A path may end on a border edge only if its field direction lies within 45° of the
+  // edge's normal: one running along the border would meet it at a grazing angle and cut
+  // off a sliver patch (on the lilium at alpha 5, k 3 a 6-triangle 3-corner patch, beside a
+  // 5-corner one). Both kinds of direction must occur, or the check proves nothing.
+  FCQL_REQUIRE_SHARED(obj, "lilium.obj");
+  SurfaceMesh m = loadMesh(obj);
+  CrossField f = loadField(m, test::sharedMesh("lilium.ffield"));
+  FieldAnalysis a = analyzeField(m, f);
+  GeodesicGraph g(m, f, a, TracingParameters());
+  const EdgeSampling& es = g.sampling();
+  // Whether direction j of the face beside border edge e grazes the edge.
+  auto grazes = [&](int e, int j) {
+    const int face = es.edgeFace[e][0];
+    for (int i = 0; i < 3; ++i)
+      if (m.edgeId(face, i) == e) {
+        const Vec3 edge = (m.position(m.vertex(face, (i + 1) % 3)) - m.position(m.vertex(face, i))).normalized();
+        return std::abs(edge.dot(f.direction(m, face, j).normalized())) > std::cos(kPi / 4);
+      }
+    ADD_FAILURE() << "edge " << e << " is not an edge of its face";
+    return false;
+  };
+  long across = 0, grazingDirections = 0;
+  std::set<std::pair<int, int>> seen;
+  for (int n = 0; n < g.numNodeSlots(); ++n)
+    for (const GeodesicGraph::Arc* arc = g.arcsBegin(n); arc != g.arcsEnd(n); ++arc) {
+      const int v = GeodesicGraph::targetNode(*arc);
+      if (!g.isBorderTerminal(v)) continue;
+      const int e = es.sampleEdge[g.nodeSample(v)];
+      ASSERT_FALSE(grazes(e, g.nodeDirection(v))) << "arc " << n << " ends on border edge " << e << " along it";
+      ++across;
+      if (seen.insert({e, 0}).second)
+        for (int j = 0; j < 4; ++j) grazingDirections += grazes(e, j);
+    }
+  EXPECT_GT(across, 0);
+  EXPECT_GT(grazingDirections, 0);
+}
+
 TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
   FCQL_REQUIRE_SHARED(obj, "eight.obj");
   SurfaceMesh m = loadMesh(obj);

@@ -238,11 +238,28 @@ private:
     return g_.edgeNode(q, g_.sampling_.sideOf(e, g), combed(g, dir));
   }
 
+  /// A path in direction `dir` of face f may end on the border edge `i` of f only if it meets
+  /// the border transversally, as separatrices meet each other: the direction lies closer to
+  /// the edge's normal than to the edge (within 45° of the normal). A direction closer to the
+  /// edge runs along the border, which is itself a field line there, and reaching the border
+  /// at a grazing angle would cut off a sliver patch with a spurious corner.
+  bool meetsBorderTangentially(int f, int i, const Vec3& dir) const {
+    const Vec3 edge = mesh_.position(mesh_.vertex(f, (i + 1) % 3)) - mesh_.position(mesh_.vertex(f, i));
+    const double len = edge.norm() * dir.norm();
+    return !(len > 0) || std::abs(edge.dot(dir)) > kCos45 * len;
+  }
+
   void faceArcs(int f, std::vector<BuildArc>& out) const {
     const EdgeSampling& es = g_.sampling_;
     const double alpha = g_.params_.alpha;
     Vec3 dirs[4];
     for (int j = 0; j < 4; ++j) dirs[j] = field_.direction(mesh_, f, j);
+    // Per local edge: bit j set if direction j may not end on it (a border edge it grazes).
+    int grazing[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i)
+      if (mesh_.adjacentFace(f, i) < 0)
+        for (int j = 0; j < 4; ++j)
+          if (meetsBorderTangentially(f, i, dirs[j])) grazing[i] |= 1 << j;
     for (int a = 0; a < 3; ++a) {
       int ea = mesh_.edgeId(f, a);
       int sideA = es.sideOf(ea, f);
@@ -262,7 +279,7 @@ private:
             const double along[2] = {dirs[0].dot(w), dirs[1].dot(w)};
             for (int j = 0; j < 4; ++j) {
               const double dot = j < 2 ? along[j] : -along[j - 2];
-              if (dot < kCos45 * len) continue;
+              if (dot < kCos45 * len || (grazing[b] >> j & 1)) continue;
               const int node = g_.edgeNode(qa, sideA, combed(f, j));
               out.push_back({node, {nodeAcross(f, b, qb, j), float(anisotropicLength(w, dirs[j], alpha))}});
             }
@@ -302,6 +319,7 @@ private:
         Vec3 d = field_.direction(mesh_, f, dir);
         Vec3 w = to - apex;
         if (!withinSector(w, d)) continue;
+        if (mesh_.adjacentFace(f, i) < 0 && meetsBorderTangentially(f, i, d)) continue;
         out.push_back({g_.sourceNode(p), {nodeAcross(f, i, q, dir), float(anisotropicLength(w, d, g_.params_.alpha))}});
       }
     }
