@@ -23,31 +23,34 @@ double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, 
   return std::min(a, kPi / 2 - a);
 }
 
-}  // namespace
-
-double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
-                         const std::vector<Vec3>& surfacePoints) {
+/// Calls visit(point, distance) for every point the Hausdorff distance measures (see the
+/// header): quad centres, corners and edge midpoints against the surface, each once, then the
+/// surface points against the quads.
+template <class Visit>
+void measureBothWays(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex, const std::vector<Vec3>& surfacePoints,
+                     Visit&& visit) {
   const auto& P = quads.positions;
-  if (quads.quads.empty()) return std::numeric_limits<double>::infinity();
   // Quad mesh → surface: every quad's centre, corners and edge midpoints, each point measured
   // once (a corner is shared by about four quads, an edge by two).
   std::vector<char> corner(P.size(), 0);
   std::vector<std::pair<int, int>> edges;
   edges.reserve(4 * quads.quads.size());
-  double toSurface = 0;
   for (const auto& f : quads.quads) {
-    toSurface = std::max(toSurface, surfaceIndex.closest((P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4).distance);
+    const Vec3 centre = (P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4;
+    visit(centre, surfaceIndex.closest(centre).distance);
     for (int i = 0; i < 4; ++i) {
       corner[f[i]] = 1;
       edges.push_back(std::minmax(f[i], f[(i + 1) % 4]));
     }
   }
   for (std::size_t v = 0; v < P.size(); ++v)
-    if (corner[v]) toSurface = std::max(toSurface, surfaceIndex.closest(P[v]).distance);
+    if (corner[v]) visit(P[v], surfaceIndex.closest(P[v]).distance);
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  for (const auto& e : edges)
-    toSurface = std::max(toSurface, surfaceIndex.closest((P[e.first] + P[e.second]) / 2).distance);
+  for (const auto& e : edges) {
+    const Vec3 middle = (P[e.first] + P[e.second]) / 2;
+    visit(middle, surfaceIndex.closest(middle).distance);
+  }
   // Surface → quad mesh, each quad split along its shorter diagonal.
   std::vector<std::array<int, 3>> triangles;
   triangles.reserve(2 * quads.quads.size());
@@ -61,9 +64,27 @@ double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surface
     }
   }
   const ClosestPointIndex quadIndex(P, triangles);
-  double toQuads = 0;
-  for (const Vec3& p : surfacePoints) toQuads = std::max(toQuads, quadIndex.closest(p).distance);
-  return std::max(toSurface, toQuads);
+  for (const Vec3& p : surfacePoints) visit(p, quadIndex.closest(p).distance);
+}
+
+}  // namespace
+
+double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                         const std::vector<Vec3>& surfacePoints) {
+  if (quads.quads.empty()) return std::numeric_limits<double>::infinity();
+  double distance = 0;
+  measureBothWays(quads, surfaceIndex, surfacePoints, [&](const Vec3&, double d) { distance = std::max(distance, d); });
+  return distance;
+}
+
+std::vector<Vec3> pointsFartherThan(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                                    const std::vector<Vec3>& surfacePoints, double limit) {
+  std::vector<Vec3> far;
+  if (quads.quads.empty()) return far;
+  measureBothWays(quads, surfaceIndex, surfacePoints, [&](const Vec3& p, double d) {
+    if (d > limit) far.push_back(p);
+  });
+  return far;
 }
 
 double scaledJacobian(const QuadMesh& mesh, int q) {

@@ -26,6 +26,11 @@ namespace fcql {
 double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
                          const std::vector<Vec3>& surfacePoints);
 
+/// The points the Hausdorff distance measures (either way) that lie farther than `limit`
+/// from the other side: where the quads leave the surface or fail to cover it.
+std::vector<Vec3> pointsFartherThan(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                                    const std::vector<Vec3>& surfacePoints, double limit);
+
 /// Scaled Jacobian of quad q of `mesh` (see above).
 double scaledJacobian(const QuadMesh& mesh, int q);
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -194,6 +195,49 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   }
   untangle(quads, index, fixed, neighbours, report);
   return report;
+}
+
+int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, const std::vector<Vec3>& far,
+                            double radius) {
+  const int nv = quads.numVertices();
+  if (int(sampled.size()) != nv) throw std::invalid_argument("restoreSampledPositions: one sampled position per vertex");
+  if (far.empty() || !(radius > 0)) return 0;
+  // Buckets of the far points on a grid of cell `radius`: each vertex looks at 27 cells.
+  auto cellOf = [&](const Vec3& p) {
+    return std::array<long long, 3>{{(long long)std::floor(p.x() / radius), (long long)std::floor(p.y() / radius),
+                                     (long long)std::floor(p.z() / radius)}};
+  };
+  std::map<std::array<long long, 3>, std::vector<int>> cells;
+  for (int i = 0; i < int(far.size()); ++i) cells[cellOf(far[i])].push_back(i);
+  std::vector<std::vector<int>> quadsOf(nv);
+  for (int q = 0; q < quads.numQuads(); ++q)
+    for (int v : quads.quads[q]) quadsOf[v].push_back(q);
+  std::vector<double> before(quads.numQuads());
+  for (int q = 0; q < quads.numQuads(); ++q) before[q] = scaledJacobian(quads, q);
+  // Vertex by vertex in index order: a return that folds or flattens one of the vertex's
+  // quads (given where the others are by then) is not made.
+  int count = 0;
+  for (int v = 0; v < nv; ++v) {
+    if (quadsOf[v].empty() || quads.positions[v] == sampled[v]) continue;
+    const Vec3 smoothed = quads.positions[v];
+    const auto c = cellOf(smoothed);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          auto it = cells.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
+          if (it == cells.end()) continue;
+          for (int i : it->second) nearest = std::min(nearest, (far[i] - smoothed).norm());
+        }
+    if (!(nearest < radius)) continue;
+    const double share = std::min(1.0, 2.0 * (1.0 - nearest / radius));
+    quads.positions[v] = smoothed + (sampled[v] - smoothed) * share;
+    bool folds = false;
+    for (int q : quadsOf[v]) folds = folds || (before[q] > kMinScaledJacobian && scaledJacobian(quads, q) <= kMinScaledJacobian);
+    if (folds) quads.positions[v] = smoothed;
+    else ++count;
+  }
+  return count;
 }
 
 }  // namespace fcql

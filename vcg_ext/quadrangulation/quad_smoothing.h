@@ -39,4 +39,15 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
                                const std::vector<std::array<int, 3>>& surfaceTriangles,
                                const SmoothingOptions& options);
 
+/// Undoes smoothing near the points where the quads stray from the surface. Smoothing keeps
+/// vertices on the surface but lets them slide off sharp tips (an ear's tip, a cone's apex),
+/// whose surface is then no longer covered. Every vertex within `radius` of a point of `far`
+/// goes back towards its `sampled` position: all the way within radius / 2, by a share
+/// falling linearly to 0 at `radius`. Vertices go back one by one in index order; one whose
+/// return would fold or nearly flatten one of its quads, given where the others are by then
+/// (scaled Jacobian at most 0.1 where it was above), keeps its smoothed position. Returns how
+/// many vertices moved. Throws std::invalid_argument unless `sampled` has one position per vertex.
+int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, const std::vector<Vec3>& far,
+                            double radius);
+
 }  // namespace fcql

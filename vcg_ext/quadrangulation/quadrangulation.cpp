@@ -33,6 +33,7 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     r.lengths = solveLengths(r.graph);
   }
   r.mesh = samplePatches(layout, r.graph, r.lengths);
+  r.sampledPositions = r.mesh.positions;
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
   r.report = checkQuadMesh(r.mesh);
   if (!r.report.manifold)
@@ -80,7 +81,26 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   const ClosestPointIndex surface(layout.positions, layout.triangles);
   for (const auto& t : layout.triangles)
     samples.push_back((layout.positions[t[0]] + layout.positions[t[1]] + layout.positions[t[2]]) / 3);
-  r.deviation = hausdorffDistance(r.mesh, surface, samples);
+  // Smoothing may have slid vertices off a sharp tip, which the sampled mesh covered: where
+  // the quads stray too far, undo it around those points (a few rounds, while it helps)
+  // before sampling finer.
+  auto measure = [&](QuadrangulationResult& q) {
+    q.deviation = hausdorffDistance(q.mesh, surface, samples);
+    for (int round = 0; round < 3 && q.deviation > limit; ++round) {
+      const std::vector<Vec3> smoothed = q.mesh.positions;
+      const int restored = restoreSampledPositions(q.mesh, q.sampledPositions,
+                                                   pointsFartherThan(q.mesh, surface, samples, limit),
+                                                   2 * q.targetEdgeLength);
+      const double deviation = restored > 0 ? hausdorffDistance(q.mesh, surface, samples) : q.deviation;
+      if (!(deviation < q.deviation)) {
+        q.mesh.positions = smoothed;
+        break;
+      }
+      q.restoredVertices += restored;
+      q.deviation = deviation;
+    }
+  };
+  measure(r);
   QuadrangulationOptions finer = options;
   while (r.deviation > limit && r.refinements < options.maxRefinements) {
     finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviation), 0.5, 0.9);
@@ -88,7 +108,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     try {
       QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);
       next.refinements = refinements;
-      next.deviation = hausdorffDistance(next.mesh, surface, samples);
+      measure(next);
       r = std::move(next);
     } catch (const std::runtime_error& e) {
       // A finer pass that fails (zero chains that do not resolve at that size, say) leaves
@@ -112,6 +132,12 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
                   r.refinements, 100 * options.maxDeviation, options.targetEdgeLength, r.targetEdgeLength,
                   diagonal > 0 ? 100 * r.deviation / diagonal : 0.0,
                   r.deviation > r.deviationLimit ? " (still above: refinements exhausted)" : "");
+    notes.push_back(line);
+  }
+  if (r.restoredVertices > 0) {
+    std::snprintf(line, sizeof line,
+                  "smoothing undone for %d vertices where the quads strayed more than %g%% from the surface (sharp tips)",
+                  r.restoredVertices, 100 * options.maxDeviation);
     notes.push_back(line);
   }
   if (!r.refinementProblem.empty()) {

@@ -20,6 +20,10 @@ struct QuadrangulationResult {
   int splitPatches = 0;    ///< patches split for zero chains, in all
   int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
   SmoothingReport smoothing;
+  std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
+  /// Vertices put back towards their sampled positions where the smoothed quads strayed more
+  /// than maxDeviation from the surface (restoreSampledPositions).
+  int restoredVertices = 0;
   double targetEdgeLength = 0;  ///< the target edge length the mesh was sampled with
   int refinements = 0;          ///< times the target was lowered to meet maxDeviation
   double deviation = 0;         ///< Hausdorff distance to the surface, absolute (0 if not measured)
