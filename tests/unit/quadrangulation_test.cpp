@@ -392,6 +392,36 @@ TEST(Quadrangulation, SplittingAPatchWithTJunctionsGivesConsistentParts) {
   EXPECT_EQ(defect, 4 * q->mesh.eulerCharacteristic());
 }
 
+TEST(Quadrangulation, NeighboursSplitInOneRoundShareTheMiddleOfTheirSide) {
+  // Two adjacent patches of the rounded box split in one round: their shared segment is
+  // halved once, so each becomes 4 quads (a Catmull-Clark step of both). Halving it again for
+  // the second patch would make that one a pentagon of 5 parts, with a t-junction against
+  // the first one's parts.
+  auto q = layoutOf(makeRoundedBox());
+  ASSERT_EQ(q->patches.numPatches(), 6);
+  PatchGraph graph = buildPatchGraph(q->patches);
+  int a = -1, b = -1;
+  for (const auto& s : graph.segments)
+    if (s.patchA >= 0 && s.patchB >= 0 && s.patchA != s.patchB) {
+      a = s.patchA, b = s.patchB;
+      break;
+    }
+  ASSERT_GE(a, 0);
+  splitPatches(graph, q->patches, {a, b});
+  int parts = 0;
+  for (const auto& p : graph.patches) {
+    if (!p.active) continue;
+    if (p.layoutPatch != a && p.layoutPatch != b) continue;
+    ++parts;
+    int segments = 0;
+    for (const auto& side : p.sides) segments += int(side.size());
+    EXPECT_EQ(segments, 4) << "a part of layout patch " << p.layoutPatch << " has a t-junction";
+  }
+  EXPECT_EQ(parts, 8);
+  const SideLengths lengths = solveSideLengths(graph, 0.05 * q->mesh.boundingBoxDiagonal(), 10);
+  EXPECT_TRUE(lengths.inconsistentPatches.empty());
+}
+
 TEST(Quadrangulation, SharedMeshesGiveCloseManifoldQuadMeshes) {
   FCQL_REQUIRE_SHARED(eight, "eight.obj");
   SurfaceMesh mesh = loadMesh(eight);

@@ -58,7 +58,21 @@ public:
   }
 
   void split(int p) {
-    const PatchSides parent = g_.patches[p];  // copy: the vectors grow below
+    PatchSides parent = g_.patches[p];  // copy: the vectors grow below
+    // Segments halved by a neighbour split in the same round are whole edges of this n-gon
+    // again: their halves and middle node are reused, so that the round splits its patches
+    // at once and leaves no t-junction between two of them.
+    for (auto& side : parent.sides)
+      for (std::size_t j = 0; j + 1 < side.size(); ++j) {
+        auto it = halfOf_.find(side[j].segment);
+        if (it == halfOf_.end()) continue;
+        const std::array<int, 3>& h = halved_.at(it->second);
+        const bool forward = !side[j].reversed && side[j].segment == h[0] && side[j + 1].segment == h[1] && !side[j + 1].reversed;
+        const bool backward = side[j].reversed && side[j].segment == h[1] && side[j + 1].segment == h[0] && side[j + 1].reversed;
+        if (!forward && !backward) continue;
+        side[j] = replacedSide_.at({p, it->second});
+        side.erase(side.begin() + j + 1);
+      }
     // The boundary as an n-gon: its segments in order, with the chart position of each node.
     std::vector<SideSegment> edges;
     for (const auto& side : parent.sides) edges.insert(edges.end(), side.begin(), side.end());
@@ -122,16 +136,16 @@ public:
     std::vector<SideSegment> firstHalf(n), secondHalf(n);
     std::vector<int> middle(n);
     std::vector<Vec2> middleUv(n);
-    std::map<int, std::array<int, 3>> halved;  // segment → (first half, second half, middle node)
     for (int i = 0; i < n; ++i) {
       const SideSegment ss = edges[i];
-      // A patch whose boundary meets itself (a torus cut open into one patch) uses a segment
-      // twice: it is halved once, both uses take the same halves.
-      auto it = halved.find(ss.segment);
-      if (it == halved.end()) {
+      // A segment is halved once: a patch whose boundary meets itself (a torus cut open into
+      // one patch) uses it twice, and a neighbour split in the same round may have halved it.
+      auto it = halved_.find(ss.segment);
+      if (it == halved_.end()) {
         int a, b;
         const int m = splitSegment(ss.segment, p, a, b);
-        it = halved.emplace(ss.segment, std::array<int, 3>{{a, b, m}}).first;
+        it = halved_.emplace(ss.segment, std::array<int, 3>{{a, b, m}}).first;
+        halfOf_[a] = halfOf_[b] = ss.segment;
       }
       const int a = it->second[0], b = it->second[1];
       middle[i] = it->second[2];
@@ -298,6 +312,7 @@ private:
       for (auto& list : ps.sides)
         for (std::size_t j = 0; j < list.size(); ++j) {
           if (list[j].segment != s) continue;
+          if (owner != splitting) replacedSide_[{owner, s}] = list[j];
           const bool r = list[j].reversed;
           const std::vector<SideSegment> repl =
               r ? std::vector<SideSegment>{{b, true, 0}, {a, true, 0}} : std::vector<SideSegment>{{a, false, 0}, {b, false, 0}};
@@ -318,6 +333,11 @@ private:
   std::map<int, std::vector<int>> trianglesOf_;
   std::unordered_map<std::uint64_t, int> halfEdge_;
   std::map<int, std::unique_ptr<PatchMap>> maps_;
+  /// Segments halved by this splitter: segment → (first half, second half, middle node), and
+  /// each half → its segment; the side entry each other owner had before, per (owner, segment).
+  std::map<int, std::array<int, 3>> halved_;
+  std::map<int, int> halfOf_;
+  std::map<std::pair<int, int>, SideSegment> replacedSide_;
 };
 
 }  // namespace
