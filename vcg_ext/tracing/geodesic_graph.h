@@ -23,7 +23,9 @@
 //  - From an edge node (s, t, j) to every auxiliary point s' on the two other edges of t whose
 //    direction s' − s lies within 45° of direction j of t (its sector); the target is the node
 //    of s' in the triangle t' across that edge, carrying the transported direction
-//    j' = j + matching(t, edge). Weight = Eq. 1: |w|(1 + α·Angle(d_j, w)/(π/4)).
+//    j' = j + matching(t, edge). Weight = Eq. 1: |w|(1 + α·Angle(d_j, w)/(π/4)). A point s'
+//    on a border edge (the border terminal: the path ends there) only if direction j meets
+//    the border across it, within 45° of the edge's normal, as separatrices meet each other.
 //  - From an edge node (s, t, j) to the sink of port p of the vertex v opposite s in t, when v
 //    lies in the sector of (s, t, j), s lies in the sector of p in the conformally flattened
 //    star of v, and j is p's direction carried to t, reversed (pointing at v).
