@@ -101,6 +101,7 @@ std::vector<std::string> describeFieldStep(const FieldStepResult& r,
                   std::to_string(a.numPorts()) + ", index sum: " +
                   fcql::formatQuarterIndex(a.indexSumQuarters()) + " (Euler characteristic " +
                   std::to_string(m.eulerCharacteristic()) + ")");
+  for (const std::string& warning : fcql::fieldWarnings(m, a)) lines.push_back("Warning: " + warning);
   lines.push_back("Time: field " + formatSeconds(r.fieldSeconds) + ", analysis " +
                   formatSeconds(r.analysisSeconds) + ", total " +
                   formatSeconds(r.conversionSeconds + r.fieldSeconds + r.analysisSeconds));

@@ -83,6 +83,7 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
                       (hist.empty() ? std::string("none") : hist) + "), " +
                       std::to_string(s.analysis.numPorts()) + " ports, index sum " +
                       formatQuarterIndex(s.analysis.indexSumQuarters()));
+  for (const std::string& warning : fieldWarnings(s.mesh, s.analysis)) progress(quiet, "warning: " + warning);
   return s;
 }
 

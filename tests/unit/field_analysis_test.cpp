@@ -186,3 +186,35 @@ TEST(FieldAnalysis, PortCountsMatchIndicesOnSharpAndNoisyMeshes) {
     }
   }
 }
+
+#include "mesh/generators.h"
+
+TEST(FieldAnalysis, WarnsAboutCentresThatLeaveNoSeparatrix) {
+  // A closed cylinder whose caps are triangle fans, as CAD exports often are: each cap has a
+  // single inner vertex, which takes the cap's whole index +1 (its field runs round the rim)
+  // and leaves no separatrix. The log must say so, name it and say what helps.
+  const int k = 24;
+  std::vector<Vec3> positions;
+  for (double z : {0.0, 3.0})
+    for (int i = 0; i < k; ++i) positions.push_back(Vec3(std::cos(2 * M_PI * i / k), std::sin(2 * M_PI * i / k), z));
+  positions.push_back(Vec3(0, 0, 0));
+  positions.push_back(Vec3(0, 0, 3));
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 0; i < k; ++i) {
+    const int a = i, b = (i + 1) % k;
+    faces.push_back({a, b, k + b});
+    faces.push_back({a, k + b, k + a});
+    faces.push_back({2 * k, b, a});
+    faces.push_back({2 * k + 1, k + a, k + b});
+  }
+  SurfaceMesh capped(positions, faces);
+  FieldAnalysis a = analyzeField(capped, generateCrossField(capped));
+  const std::vector<std::string> warnings = fieldWarnings(capped, a);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("2 singularities of index 3/4 or more"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("vertex 48 (index 1, 24 triangles around it)"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("refine the mesh"), std::string::npos) << warnings[0];
+  // A rounded box's field has eight +1/4 corners: nothing to warn about.
+  SurfaceMesh box = makeRoundedBox();
+  EXPECT_TRUE(fieldWarnings(box, analyzeField(box, generateCrossField(box))).empty());
+}

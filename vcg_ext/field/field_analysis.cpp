@@ -169,6 +169,25 @@ int quartersFromTurn(double quarters) { return int(std::lround(quarters)); }
 
 }  // namespace
 
+std::vector<std::string> fieldWarnings(const SurfaceMesh& mesh, const FieldAnalysis& analysis) {
+  std::vector<std::string> warnings;
+  std::string named;
+  int count = 0;
+  for (const SingularVertex& s : analysis.singularities) {
+    if (s.onBorder || s.indexQuarters < 3) continue;
+    if (++count <= 3)
+      named += std::string(named.empty() ? "" : ", ") + "vertex " + std::to_string(s.vertex) + " (index " +
+               formatQuarterIndex(s.indexQuarters) + ", " + std::to_string(mesh.star(s.vertex).size()) + " triangles around it)";
+  }
+  if (count == 0) return warnings;
+  warnings.push_back(std::to_string(count) + " singularit" + (count == 1 ? "y" : "ies") +
+                     " of index 3/4 or more: " + named + (count > 3 ? ", ..." : "") +
+                     ". Such a vertex leaves at most one separatrix, so the patch around it gets too few corners and "
+                     "poor quads; refine the mesh around it (e.g. midpoint subdivision) so that the field can split it "
+                     "into singularities of index 1/4");
+  return warnings;
+}
+
 std::string formatQuarterIndex(int quarters) {
   if (quarters == 0) return "0";
   int num = quarters, den = 4;

@@ -91,6 +91,13 @@ struct StarChart {
 
 StarChart computeStarChart(const SurfaceMesh& mesh, const CrossField& field, int v);
 
+/// Warnings about singularities the layout cannot serve well, for the log: interior ones of
+/// index +3/4 or more leave at most one separatrix (a +1 "centre", typically the single
+/// inner vertex of a triangle fan such as a CAD cap, leaves none), so the patch around them
+/// has too few corners and is cut as a 3-gon. Names up to three vertices and says what helps
+/// (a finer mesh there lets the field split them into +1/4 ones). Empty when there are none.
+std::vector<std::string> fieldWarnings(const SurfaceMesh& mesh, const FieldAnalysis& analysis);
+
 /// Formats index×4 as a reduced fraction: -1 → "-1/4", 2 → "1/2", 4 → "1", 0 → "0".
 std::string formatQuarterIndex(int quarters);
 
