@@ -84,6 +84,7 @@ std::vector<std::string> describeFieldStep(const FieldStepResult& r,
                   std::to_string(m.numVertices()) + " vertices, genus " +
                   std::to_string(m.genus()) + ", " + std::to_string(m.numBorderLoops()) +
                   " border loops");
+  if (!r.converted.weldingNote.empty()) lines.push_back("Mesh: " + r.converted.weldingNote);
   if (r.keptExistingField) {
     lines.push_back("Cross field: kept the field already on the mesh (per-face PD1/PD2)");
   } else {

@@ -1,5 +1,7 @@
 #include "meshlab_mesh_adapter.h"
 
+#include "mesh/vertex_welding.h"
+
 #include <string>
 #include <utility>
 
@@ -60,6 +62,20 @@ ConvertedMesh toSurfaceMesh(const CMeshO& cm) {
     throw fcql::MeshError("the mesh has no faces (a triangle mesh is needed, not a point cloud)");
 
   out.mesh = fcql::SurfaceMesh(std::move(positions), std::move(faces));
+  fcql::VertexWelding welding = fcql::weldCoincidentVertices(out.mesh);
+  out.weldingNote = welding.note();
+  if (welding.welded) {
+    out.weldedVertices = welding.merged;
+    std::vector<int> first(welding.mesh.numVertices(), -1);
+    for (std::size_t k = 0; k < out.meshLabVertex.size(); ++k) {
+      int& f = first[welding.newIndex[k]];
+      if (f < 0) f = out.meshLabVertex[k];
+    }
+    for (int& v : out.vertexOfMeshLab)
+      if (v >= 0) v = welding.newIndex[v];
+    out.meshLabVertex = std::move(first);
+    out.mesh = std::move(welding.mesh);
+  }
   return out;
 }
 

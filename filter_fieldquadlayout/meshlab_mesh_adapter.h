@@ -2,7 +2,8 @@
 //
 // CMeshO -> fcql::SurfaceMesh: live (non-deleted) vertices and faces, in container order, so a
 // mesh without deleted elements keeps its numbering. The MeshLab mesh is not modified (no
-// compaction); the maps below translate indices both ways.
+// compaction); the maps below translate indices both ways. Vertices lying exactly on another
+// (an unwelded mesh) are merged when that leaves a valid mesh; faces keep their order.
 //
 // fcql::CrossField <-> per-face PD1/PD2 (vcglib convention): PD1 = direction 0 = u[f],
 // PD2 = direction 1 = n × u[f].
@@ -13,6 +14,7 @@
 #include "field/cross_field.h"
 #include "mesh/surface_mesh.h"
 
+#include <string>
 #include <vector>
 
 namespace fcql_meshlab {
@@ -24,6 +26,10 @@ struct ConvertedMesh {
   std::vector<int> meshLabFace;       ///< SurfaceMesh face -> index in cm.face
   std::vector<int> vertexOfMeshLab;   ///< index in cm.vert -> SurfaceMesh vertex, -1 if deleted
   std::vector<int> faceOfMeshLab;     ///< index in cm.face -> SurfaceMesh face, -1 if deleted
+  /// Vertices lying exactly on another were merged (fcql::weldCoincidentVertices): then
+  /// meshLabVertex names the first of them, vertexOfMeshLab maps each to the merged one.
+  int weldedVertices = 0;
+  std::string weldingNote;            ///< for the log (empty if no vertex lies on another)
 };
 
 /// Builds the SurfaceMesh (double precision) of the live part of `cm`. Throws fcql::MeshError

@@ -6,6 +6,7 @@
 #include "field/field_io.h"
 #include "mesh/generators.h"
 #include "mesh/mesh_io.h"
+#include "mesh/vertex_welding.h"
 
 #include <chrono>
 #include <iostream>
@@ -38,6 +39,10 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
   } else {
     s.meshName = pos[0];
     s.mesh = loadMesh(pos[0]);
+    VertexWelding welding = weldCoincidentVertices(s.mesh);
+    if (welding.merged > 0) progress(quiet, welding.note());
+    if (welding.welded) s.mesh = std::move(welding.mesh);
+    stats.set("mesh.welded_vertices", welding.welded ? welding.merged : 0);
   }
   progress(quiet, "mesh " + s.meshName + ": " + std::to_string(s.mesh.numFaces()) + " faces, " +
                       std::to_string(s.mesh.numVertices()) + " vertices, genus " + std::to_string(s.mesh.genus()) +

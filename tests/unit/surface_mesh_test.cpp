@@ -113,3 +113,53 @@ TEST(SurfaceMesh, UnreferencedVerticesDoNotCount) {
   EXPECT_EQ(m.eulerCharacteristic(), 2);
   EXPECT_TRUE(m.star(4).empty());
 }
+
+#include "mesh/generators.h"
+#include "mesh/vertex_welding.h"
+
+TEST(VertexWelding, AnUnweldedMeshGetsItsSurfaceBack) {
+  // Every face with its own three vertices (a triangle soup): 1 component per face, each with
+  // a border. Welding gives the rounded box back, faces in their order.
+  SurfaceMesh box = makeRoundedBox();
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> faces;
+  for (int f = 0; f < box.numFaces(); ++f) {
+    std::array<int, 3> t;
+    for (int c = 0; c < 3; ++c) t[c] = int(positions.size()), positions.push_back(box.position(box.vertex(f, c)));
+    faces.push_back(t);
+  }
+  SurfaceMesh soup(positions, faces);
+  ASSERT_EQ(soup.numBorderLoops(), box.numFaces());
+  VertexWelding w = weldCoincidentVertices(soup);
+  ASSERT_TRUE(w.welded) << w.problem;
+  EXPECT_EQ(w.merged, 3 * box.numFaces() - box.numVertices());
+  EXPECT_EQ(w.mesh.numVertices(), box.numVertices());
+  EXPECT_EQ(w.mesh.numBorderLoops(), 0);
+  EXPECT_EQ(w.mesh.genus(), 0);
+  ASSERT_EQ(w.mesh.numFaces(), box.numFaces());
+  for (int f = 0; f < box.numFaces(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(w.mesh.position(w.mesh.vertex(f, c)), box.position(box.vertex(f, c)));
+      EXPECT_EQ(w.newIndex[faces[f][c]], w.mesh.vertex(f, c));
+    }
+  EXPECT_NE(w.note().find("merged"), std::string::npos) << w.note();
+  // Nothing to merge: nothing done, nothing to say.
+  VertexWelding none = weldCoincidentVertices(box);
+  EXPECT_EQ(none.merged, 0);
+  EXPECT_FALSE(none.welded);
+  EXPECT_TRUE(none.note().empty());
+}
+
+TEST(VertexWelding, SurfacesTouchingAtAPointStayApart) {
+  // Two tetrahedra whose apexes coincide: merging them would make a non-manifold vertex.
+  std::vector<Vec3> positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                                 Vec3(0, 0, 1), Vec3(1, 0, 2), Vec3(0, 1, 2), Vec3(0, 0, 2.5)};
+  std::vector<std::array<int, 3>> faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3},
+                                           {4, 6, 5}, {4, 5, 7}, {5, 6, 7}, {6, 4, 7}};
+  SurfaceMesh two(positions, faces);
+  VertexWelding w = weldCoincidentVertices(two);
+  EXPECT_EQ(w.merged, 1);
+  EXPECT_FALSE(w.welded);
+  EXPECT_FALSE(w.problem.empty());
+  EXPECT_NE(w.note().find("kept apart"), std::string::npos) << w.note();
+}
