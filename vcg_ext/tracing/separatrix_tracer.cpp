@@ -218,6 +218,14 @@ public:
     const BarrierSet* barriers = opt.barriers && !opt.barriers->empty() ? opt.barriers : nullptr;
     const double alpha = g_.parameters().alpha;
     int sinks = 0;
+    // Once every sink the search may stop at has been found, nothing more can be: stop there
+    // instead of exhausting the graph (the solving cycle's searches allow only the few ports
+    // still dangling, often fewer than k).
+    int allowedSinks = 0;
+    for (int p = 0; p < int(g_.ports().size()); ++p)
+      allowedSinks += p != port && (opt.sinkAllowed.empty() || opt.sinkAllowed[p] != 0);
+    const int wanted = std::min(opt.maxSinks, allowedSinks);
+    if (wanted == 0 && !opt.tJunctionMode) return found;
     while (!heap.empty()) {
       auto [d, u] = heap.pop();
       if (u < 0) {  // a t-junction terminal: the path stops on a barrier
@@ -231,7 +239,7 @@ public:
         if (!allowed) continue;
         found.push_back(buildPath(port, u, d, TracedPath::Sink));
         found.back().sinkPort = p;
-        if (opt.tJunctionMode || ++sinks >= opt.maxSinks) break;
+        if (opt.tJunctionMode || ++sinks >= wanted) break;
         continue;
       }
       if (opt.tJunctionMode && g_.isBorderTerminal(u)) {  // only t-junction searches enter them
