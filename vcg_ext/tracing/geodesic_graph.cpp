@@ -94,28 +94,44 @@ public:
     count(portArcs);
     for (int i = 0; i < numSlots; ++i) begin[i + 1] += begin[i];
     g_.arcs_.resize(begin[numSlots]);
+    // Every edge node's arcs come from the one face it continues into (a source node's from
+    // its port), so all the arcs of a node lie in one buffer: the buffers are placed, the
+    // nodes' arcs sorted and the dead ends marked on the worker threads, no node shared.
     std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
-    std::vector<char> live(numSlots, 0);
-    auto place = [&](std::vector<BuildArc>& arcs) {
-      for (const BuildArc& a : arcs) {
-        g_.arcs_[fill[a.from]++] = a.arc;
-        live[a.from] = live[GeodesicGraph::targetNode(a.arc)] = 1;
+    std::vector<unsigned char> live(numSlots, 0);
+    std::vector<std::vector<BuildArc>*> buffers;
+    for (auto& v : perThread) buffers.push_back(&v);
+    buffers.push_back(&portArcs);
+    runOnWorkerThreads(threads, [&](int t) {
+      for (std::size_t b = t; b < buffers.size(); b += threads) {
+        for (const BuildArc& a : *buffers[b]) {
+          g_.arcs_[fill[a.from]++] = a.arc;
+          __atomic_store_n(&live[a.from], 1, __ATOMIC_RELAXED);
+          __atomic_store_n(&live[GeodesicGraph::targetNode(a.arc)], 1, __ATOMIC_RELAXED);
+        }
+        std::vector<BuildArc>().swap(*buffers[b]);
       }
-      std::vector<BuildArc>().swap(arcs);
-    };
-    for (auto& v : perThread) place(v);
-    place(portArcs);
-    for (int n = 0; n < numSlots; ++n)
-      std::sort(g_.arcs_.begin() + begin[n], g_.arcs_.begin() + begin[n + 1],
-                [](const GeodesicGraph::Arc& a, const GeodesicGraph::Arc& b) {
-                  return a.target != b.target ? a.target < b.target : a.weight < b.weight;
-                });
+    });
+    const int block = 1 << 14;
+    std::atomic<int> nextBlock{0};
+    runOnWorkerThreads(threads, [&](int) {
+      for (int first; (first = nextBlock.fetch_add(block)) < numSlots;)
+        for (int n = first; n < std::min(numSlots, first + block); ++n)
+          std::sort(g_.arcs_.begin() + begin[n], g_.arcs_.begin() + begin[n + 1],
+                    [](const GeodesicGraph::Arc& a, const GeodesicGraph::Arc& b) {
+                      return a.target != b.target ? a.target < b.target : a.weight < b.weight;
+                    });
+    });
     g_.numLiveNodes_ = std::count(live.begin(), live.end(), 1);
     // Arcs into edge nodes without arcs out (their direction, carried into the next triangle,
     // points back across the edge) lead nowhere either: complemented like border terminals,
     // after the sort, so that the order of the arcs does not change.
-    for (GeodesicGraph::Arc& a : g_.arcs_)
-      if (a.target >= 0 && !g_.isPortNode(a.target) && begin[a.target] == begin[a.target + 1]) a.target = ~a.target;
+    const int nodeRange = std::max(1, (numSlots + threads - 1) / threads);
+    runOnWorkerThreads(threads, [&](int t) {
+      const int from = std::min(numSlots, t * nodeRange), to = std::min(numSlots, from + nodeRange);
+      for (auto a = g_.arcs_.begin() + begin[from], end = g_.arcs_.begin() + begin[to]; a != end; ++a)
+        if (a->target >= 0 && !g_.isPortNode(a->target) && begin[a->target] == begin[a->target + 1]) a->target = ~a->target;
+    });
   }
 
 private:
