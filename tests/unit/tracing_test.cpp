@@ -124,6 +124,11 @@ TEST(Tracing, CubeCandidatesIncludeTheTwelveEdges) {
 int checkAuxiliaryPoints(const SurfaceMesh& m, double phiDeg) {
   const double phi = phiDeg * kPi / 180;
   EdgeSampling es = sampleEdges(m, phi);
+  // Sampled on two threads: the same points, numbered the same way.
+  const EdgeSampling two = sampleEdges(m, phi, 48, 2);
+  EXPECT_EQ(two.sampleEdge, es.sampleEdge);
+  EXPECT_EQ(two.sampleParam, es.sampleParam);
+  EXPECT_EQ(two.firstSample, es.firstSample);
   auto angleAt = [](const Vec3& apex, const Vec3& a, const Vec3& b) {
     Vec3 u = a - apex, v = b - apex;
     return std::atan2(u.cross(v).norm(), u.dot(v));

@@ -1,6 +1,9 @@
 #include "tracing/edge_sampling.h"
 
+#include "mesh/worker_threads.h"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -137,7 +140,7 @@ std::vector<int> spatialEdgeOrder(const SurfaceMesh& mesh, const EdgeSampling& s
 
 }  // namespace
 
-EdgeSampling sampleEdges(const SurfaceMesh& mesh, double phiRadians, int maxSegments) {
+EdgeSampling sampleEdges(const SurfaceMesh& mesh, double phiRadians, int maxSegments, int threads) {
   const int ne = mesh.numEdges();
   EdgeSampling s;
   s.firstSample.assign(ne, 0);
@@ -152,19 +155,24 @@ EdgeSampling sampleEdges(const SurfaceMesh& mesh, double phiRadians, int maxSegm
       s.edgeLocal[e][side] = i;
     }
   std::vector<std::vector<double>> params(ne);
-  std::vector<Vec3> apexes;
-  for (int e = 0; e < ne; ++e) {
-    int f = s.edgeFace[e][0], i = s.edgeLocal[e][0];
-    if (f < 0) continue;
-    const Vec3& a = mesh.position(mesh.vertex(f, i));
-    const Vec3& b = mesh.position(mesh.vertex(f, (i + 1) % 3));
-    apexes.clear();
-    for (int side = 0; side < 2; ++side) {
-      int g = s.edgeFace[e][side];
-      if (g >= 0) apexes.push_back(mesh.position(mesh.vertex(g, (s.edgeLocal[e][side] + 2) % 3)));
-    }
-    params[e] = edgePoints(a, b, apexes, phiRadians, maxSegments);
-  }
+  std::atomic<int> nextEdge{0};
+  const int chunk = 1024;
+  runOnWorkerThreads(workerThreadCount(threads, ne / chunk + 1), [&](int) {
+    std::vector<Vec3> apexes;
+    for (int first; (first = nextEdge.fetch_add(chunk)) < ne;)
+      for (int e = first; e < std::min(ne, first + chunk); ++e) {
+        int f = s.edgeFace[e][0], i = s.edgeLocal[e][0];
+        if (f < 0) continue;
+        const Vec3& a = mesh.position(mesh.vertex(f, i));
+        const Vec3& b = mesh.position(mesh.vertex(f, (i + 1) % 3));
+        apexes.clear();
+        for (int side = 0; side < 2; ++side) {
+          int g = s.edgeFace[e][side];
+          if (g >= 0) apexes.push_back(mesh.position(mesh.vertex(g, (s.edgeLocal[e][side] + 2) % 3)));
+        }
+        params[e] = edgePoints(a, b, apexes, phiRadians, maxSegments);
+      }
+  });
   // Samples are numbered edge by edge in a spatial order (Morton order of the edges'
   // midpoints), so that samples near each other on the surface are near each other in
   // memory: searches sweep the surface as a front.

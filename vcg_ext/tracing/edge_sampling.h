@@ -41,7 +41,8 @@ struct EdgeSampling {
 };
 
 /// Samples every edge with angular resolution `phiRadians`; at most `maxSegments` segments
-/// per edge (needle triangles would otherwise ask for hundreds).
-EdgeSampling sampleEdges(const SurfaceMesh& mesh, double phiRadians, int maxSegments = 48);
+/// per edge (needle triangles would otherwise ask for hundreds). The edges are sampled on
+/// `threads` worker threads (0: all hardware threads); the result does not depend on it.
+EdgeSampling sampleEdges(const SurfaceMesh& mesh, double phiRadians, int maxSegments = 48, int threads = 1);
 
 }  // namespace fcql

@@ -355,7 +355,7 @@ GeodesicGraph::GeodesicGraph(const SurfaceMesh& mesh, const CrossField& field, c
   params_.validate();
   if (field.numFaces() != mesh.numFaces() || int(analysis.matching.size()) != mesh.numFaces())
     throw std::invalid_argument("the field or its analysis does not belong to this mesh");
-  sampling_ = sampleEdges(mesh, params_.phiDeg * kPi / 180.0);
+  sampling_ = sampleEdges(mesh, params_.phiDeg * kPi / 180.0, 48, params_.threads);
   GeodesicGraphBuilder(*this).build();
 }
 
