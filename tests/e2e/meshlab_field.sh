@@ -194,6 +194,23 @@ grep -q 'value="500"' "$work/bad_angle.mlx" || fail "could not write bad_angle.m
 expect_failure bad_angle "$work/cube.off" "$work/bad_angle.mlx" "sharp_angle.*500.*between 0 and 180"
 [ ! -e "$work/bad_angle_out.ply" ] || fail "bad_angle: an output was written after the failure"
 
+# ---- 5b. an unwelded cube: every face with its own three vertices ---------------------------
+# The filter merges the vertices that lie on one another (and says so): the cube's 8 corners
+# are found as on the welded cube.
+awk 'NR == 1 { next } NR == 2 { nv = $1; nf = $2; next }
+     NR <= 2 + nv { v[NR - 3] = $1 " " $2 " " $3; next }
+     { f[++k] = v[$2] "\n" v[$3] "\n" v[$4] }
+     END { print "OFF"; print 3 * nf, nf, 0; for (i = 1; i <= k; i++) print f[i];
+           for (i = 0; i < nf; i++) print 3, 3 * i, 3 * i + 1, 3 * i + 2 }' "$work/cube.off" >"$work/unwelded.off"
+if expect_success unwelded "$work/unwelded.off"; then
+  grep -aq 'lie exactly on another vertex: merged' "$work/unwelded.log" ||
+    fail "unwelded: the log does not say that the vertices were merged"
+  case "$(singularity_line "$work/unwelded.log")" in
+    *"(by index: 1/4: 8)"*"index sum: 2 "*) ;;
+    *) fail "unwelded: expected the cube's 8 singularities, got: $(singularity_line "$work/unwelded.log")" ;;
+  esac
+fi
+
 # ---- 6. a non-manifold mesh: three triangles sharing one edge ------------------------------
 cat >"$work/fin.off" <<'EOF'
 OFF
