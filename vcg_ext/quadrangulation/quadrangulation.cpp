@@ -131,7 +131,9 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
                   "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation %.3g%%%s",
                   r.refinements, 100 * options.maxDeviation, options.targetEdgeLength, r.targetEdgeLength,
                   diagonal > 0 ? 100 * r.deviation / diagonal : 0.0,
-                  r.deviation > r.deviationLimit ? " (still above: refinements exhausted)" : "");
+                  r.deviation <= r.deviationLimit ? ""
+                  : r.refinementProblem.empty()   ? " (still above: refinements exhausted)"
+                                                  : " (still above: the next finer pass failed, see below)");
     notes.push_back(line);
   }
   if (r.restoredVertices > 0) {
