@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 
 namespace fcql {
 
@@ -110,13 +111,23 @@ int quadCommand(int argc, char** argv) {
   FieldStage fs = runFieldStage(cl, stats, quiet);
   TraceStage ts = runTraceStage(fs, tp, stats, quiet);
   LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
+  // The layout's files are formatted on another thread while the quad stage runs (the graph H
+  // candidates alone are tens of MB of text); they are written once the quads exist, so a
+  // failed quad stage still leaves no file behind. Waiting here joins the thread on any exit.
+  struct LayoutTexts {
+    std::string candidates, separatrices, layout;
+  };
+  std::future<LayoutTexts> texts = std::async(std::launch::async, [&ts, &ls] {
+    return LayoutTexts{candidatesObj(ts.h), separatricesToObj(ls.layout), patchLayoutToPly(ls.patches)};
+  });
   QuadStage qs = runQuadStage(fs, ls, cl, stats, quiet);
   const auto outputStart = Clock::now();
+  const LayoutTexts layoutTexts = texts.get();
   OutputDir out(cl.value("out"));
   saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
-  out.writeText("candidates.obj", candidatesObj(ts.h));
-  out.writeText("separatrices.obj", separatricesToObj(ls.layout));
-  out.writeText("layout.ply", patchLayoutToPly(ls.patches));
+  out.writeText("candidates.obj", layoutTexts.candidates);
+  out.writeText("separatrices.obj", layoutTexts.separatrices);
+  out.writeText("layout.ply", layoutTexts.layout);
   out.writeText("quad.obj", quadMeshToObj(qs.mesh));
   recordTotalTime(stats, start, outputStart);
   out.writeText("stats.json", stats.toString());
