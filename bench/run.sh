@@ -171,11 +171,12 @@ done
   stage; the layout's files are formatted on a second thread while the quads are made, so
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
-  issue's target, 10× below the paper's time, is met on rockerarm only (16× on the layout,
-  12× on the whole run; the comparison is unfair the other way: our rockerarm has 20K faces,
-  the paper's 70K); the bunny is 9× below on the layout and 7× on the whole run, fertility
-  6× and 4×. Times vary by 10–40% from run to run on this machine (a shared virtual machine:
-  the bunny's whole run has taken 3.7 s to 4.7 s with the same code).
+  issue's target, 10× below the paper's time, is met on rockerarm only (16–17.5× on the
+  layout, 12–14× on the whole run in two bench runs on 2026-12-02; the comparison is unfair
+  the other way: our rockerarm has 20K faces, the paper's 70K); the bunny is 7.5–9× below on
+  the layout and 6–7× on the whole run, fertility 6× and 4×. Times vary by 10–40% from run
+  to run on this machine (a shared virtual machine: the bunny's layout took 2.9 s in one
+  bench run and 3.5 s in the next, with the same tracing code).
 - **Quality**: every mesh is within 1% of the diagonal. Where the quads stray farther, the
   quad stage first undoes the smoothing around those points (`quad.restored_vertices`:
   smoothing keeps vertices on the surface but lets them slide off sharp tips, which are then
