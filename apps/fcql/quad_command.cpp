@@ -112,12 +112,14 @@ int quadCommand(int argc, char** argv) {
   TraceStage ts = runTraceStage(fs, tp, stats, quiet);
   LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
   // The layout's files are formatted on another thread while the quad stage runs (the graph H
-  // candidates alone are tens of MB of text); they are written once the quads exist, so a
-  // failed quad stage still leaves no file behind. Waiting here joins the thread on any exit.
+  // candidates alone are tens of MB of text; with --threads 1, afterwards); they are written
+  // once the quads exist, so a failed quad stage still leaves no file behind. The future's
+  // destructor joins the thread on any exit.
   struct LayoutTexts {
     std::string candidates, separatrices, layout;
   };
-  std::future<LayoutTexts> texts = std::async(std::launch::async, [&ts, &ls] {
+  const auto policy = tp.threads == 1 ? std::launch::deferred : std::launch::async;
+  std::future<LayoutTexts> texts = std::async(policy, [&ts, &ls] {
     return LayoutTexts{candidatesObj(ts.h), separatricesToObj(ls.layout), patchLayoutToPly(ls.patches)};
   });
   QuadStage qs = runQuadStage(fs, ls, cl, stats, quiet);
