@@ -354,6 +354,36 @@ TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
   }
 }
 
+TEST(Quadrangulation, SideLengthsCanDropTheStretchBound) {
+  // The same t-junction (0 = 1 + 2), but segment 3 (opposite 1) is 75 long: its class must get
+  // at least floor(75 / 1.5) = 50 quads, while segment 0 (10 long) may get at most
+  // 4·10 + 4 = 44. With the bound, A's sides cannot agree; without it they do.
+  const std::vector<double> length = {10, 3, 3, 75, 2.9, 4, 5, 6, 6.4, 2.2, 2.6};
+  PatchGraph graph;
+  for (double l : length) {
+    LayoutSegment seg;
+    seg.length = l;
+    graph.segments.push_back(seg);
+  }
+  auto patch = [](std::vector<int> bottom, std::vector<int> right, std::vector<int> top, std::vector<int> left) {
+    PatchSides ps;
+    int k = 0;
+    for (const auto& side : {bottom, right, top, left}) {
+      for (int s : side) ps.sides[k].push_back({s, false, 0});
+      ++k;
+    }
+    return ps;
+  };
+  graph.patches = {patch({5}, {1, 2}, {6}, {0}), patch({7}, {3}, {8}, {1}), patch({9}, {4}, {10}, {2})};
+  const SideLengths bounded = solveSideLengths(graph, 1.0, 30);
+  EXPECT_EQ(bounded.inconsistentPatches, std::vector<int>{0});
+  EXPECT_GE(bounded.segments[3], 50);
+  const SideLengths free = solveSideLengths(graph, 1.0, 30, false);
+  EXPECT_TRUE(free.inconsistentPatches.empty());
+  EXPECT_EQ(free.segments[0], free.segments[1] + free.segments[2]);
+  EXPECT_EQ(free.segments[1], free.segments[3]);
+}
+
 TEST(Quadrangulation, SplittingAPatchWithTJunctionsGivesConsistentParts) {
   // The torus example's layout is one patch with t-junctions on its sides: split it as a zero
   // chain would be split, and check the result is consistent: every part a regular grid, the

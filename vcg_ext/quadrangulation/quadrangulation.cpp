@@ -15,14 +15,23 @@ namespace {
 /// triangles, which the quad mesh must have.
 QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options,
                                         const SurfaceTopology& surface) {
-  auto solveLengths = [&](const PatchGraph& graph) {
-    return solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit);
-  };
   QuadrangulationResult r;
+  // The lower bound on the counts (no segment sampled more than 1.5 times coarser than the
+  // target) can itself contradict the equalities at t-junctions, and no split then helps:
+  // the counts disagree again on the parts and the splits spread. When the rounds run out,
+  // the counts are solved once more without that bound before giving up.
+  auto solveLengths = [&](const PatchGraph& graph) {
+    return solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped);
+  };
   r.graph = buildPatchGraph(layout);
   r.polygonPatches = splitPolygonPatches(r.graph, layout);
   r.lengths = solveLengths(r.graph);
   while (!r.lengths.inconsistentPatches.empty()) {
+    if (r.splitRounds >= options.maxSplitRounds && !r.stretchBoundDropped) {
+      r.stretchBoundDropped = true;
+      r.lengths = solveLengths(r.graph);
+      continue;
+    }
     if (r.splitRounds >= options.maxSplitRounds)
       throw std::runtime_error(std::to_string(r.lengths.inconsistentPatches.size()) +
                                " patches still have unequal opposite sides after " +
@@ -109,6 +118,14 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);
       next.refinements = refinements;
       measure(next);
+      if (!(next.deviation < r.deviation)) {
+        // Smaller quads that get no closer (stretched or distorted patches): keep the closer mesh.
+        char line[160];
+        std::snprintf(line, sizeof line, "target edge %g: the mesh got no closer (%.3g%% of the diagonal)",
+                      finer.targetEdgeLength, 100 * options.maxDeviation * next.deviation / limit);
+        r.refinementProblem = line;
+        break;
+      }
       r = std::move(next);
     } catch (const std::runtime_error& e) {
       // A finer pass that fails (zero chains that do not resolve at that size, say) leaves
@@ -123,6 +140,10 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
 
 std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const QuadrangulationOptions& options) {
   std::vector<std::string> notes;
+  if (r.stretchBoundDropped)
+    notes.push_back("zero-chain splits did not settle in " + std::to_string(options.maxSplitRounds) +
+                    " rounds with every segment sampled at most 1.5 times coarser than the target: that bound was "
+                    "dropped, so some quads may be stretched");
   if (options.maxDeviation <= 0) return notes;
   char line[400];
   const double diagonal = r.deviationLimit / options.maxDeviation;

@@ -18,6 +18,9 @@ struct QuadrangulationResult {
   QuadMeshReport report;
   int splitRounds = 0;     ///< rounds of zero-chain splits
   int splitPatches = 0;    ///< patches split for zero chains, in all
+  /// The zero-chain splits had not settled when the rounds ran out, and the side lengths were
+  /// then solved once more without the bound on how coarse a segment may be sampled.
+  bool stretchBoundDropped = false;
   int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
   SmoothingReport smoothing;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing

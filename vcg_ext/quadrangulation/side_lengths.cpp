@@ -126,7 +126,7 @@ IntegerProgram componentProgram(const Component& c, const std::vector<SideEquali
 
 int statusRank(IntegerProgram::Status s) { return s == IntegerProgram::Status::Optimal ? 0 : 1; }
 
-SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds) {
+SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds, bool boundStretch) {
   const auto start = std::chrono::steady_clock::now();
   const int ns = int(graph.segments.size());
   // Segments that must be equal because they are the single-segment opposite sides of a
@@ -146,8 +146,9 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
   }
   std::vector<double> lowerOf(ns), upperOf(ns);
   for (int c = 0; c < ns; ++c) {
-    // No segment of a class is sampled more than kMaxStretch times coarser than the target.
-    lowerOf[c] = std::max(1.0, std::floor(classMaxIdeal[c] / kMaxStretch));
+    // No segment of a class is sampled more than kMaxStretch times coarser than the target
+    // (unless that bound is dropped).
+    lowerOf[c] = boundStretch ? std::max(1.0, std::floor(classMaxIdeal[c] / kMaxStretch)) : 1.0;
     upperOf[c] = 4 * std::ceil(classMaxIdeal[c]) + 4;
   }
   // The other opposite-side pairs (sides made of several segments, at t-junctions).
@@ -244,9 +245,10 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
 
 }  // namespace
 
-SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds) {
+SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds,
+                             bool boundStretch) {
   if (!(targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
-  return solve(graph, targetEdgeLength, timeLimitSeconds);
+  return solve(graph, targetEdgeLength, timeLimitSeconds, boundStretch);
 }
 
 }  // namespace fcql

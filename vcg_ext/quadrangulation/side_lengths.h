@@ -35,7 +35,10 @@ struct SideLengths {
 /// the same counts on every run) and 2 s for a larger one, whose relaxation is then rounded
 /// too (the better solution is kept). Throws std::runtime_error if lp_solve fails even on the
 /// LP relaxation. Patches with forceEqual get hard equalities; if that makes the program
-/// infeasible it is solved again without them.
-SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds);
+/// infeasible it is solved again without them. With `boundStretch`, no segment is sampled
+/// more than 1.5 times coarser than the target (a lower bound on each count); without it
+/// only counts of at least 1 are asked for, which the zero-chain splits can always satisfy.
+SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds,
+                             bool boundStretch = true);
 
 }  // namespace fcql
