@@ -215,8 +215,8 @@ done
   bound cannot settle in time is solved by rounding its LP relaxation), and the dragon gets
   its quad mesh: 75K quads within 0.74–0.78% of the surface (one finer pass, after the
   smoothing is undone around 1173 vertices; before that change, 81K–96K quads still 1.0–1.2%
-  away after 4 finer passes), with folded quads (scaled Jacobian down to about −0.6) around
-  the split patches. Its figures change from run to run, as lp_solve's selection at the time limit
+  away after 4 finer passes), with about 20 folded quads (scaled Jacobian down to about −0.6; the
+  three worst lie across creases of 137–144° on its spikes, features finer than the quads). Its figures change from run to run, as lp_solve's selection at the time limit
   does. With `--ilp-time-limit 5` the whole run takes 81 s: the greedy
   selection (5288 patches, 481 t-junctions), 395 patches split in 7 rounds, 88K quads within
   0.81% of the surface, scaled Jacobian down to −0.23 (before the corner rule above its splits
