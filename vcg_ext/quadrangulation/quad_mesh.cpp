@@ -2,6 +2,8 @@
 
 #include "mesh/union_find.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <map>
 #include <sstream>
 
@@ -43,19 +45,26 @@ int countBorderLoops(const std::map<int, int>& borderNext) {
 
 SurfaceTopology triangleMeshTopology(int numVertices, const std::vector<std::array<int, 3>>& triangles) {
   SurfaceTopology t;
-  std::map<std::pair<int, int>, int> directed;
+  // The directed edges as sorted keys (a, b) → a·2³² + b: a twin is found by binary search
+  // (a std::map of pairs took a tenth of a second on a 40K-face mesh's layout).
+  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  std::vector<std::uint64_t> directed;
+  directed.reserve(3 * triangles.size());
   std::vector<char> used(numVertices, 0);
   for (const auto& f : triangles)
     for (int i = 0; i < 3; ++i) {
-      directed[{f[i], f[(i + 1) % 3]}] += 1;
+      directed.push_back(key(f[i], f[(i + 1) % 3]));
       used[f[i]] = 1;
     }
+  std::sort(directed.begin(), directed.end());
+  directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
   long edges = 0;
   std::map<int, int> borderNext;
-  for (const auto& e : directed) {
-    const bool twin = directed.count({e.first.second, e.first.first}) > 0;
-    if (!twin || e.first.first < e.first.second) ++edges;
-    if (!twin) borderNext[e.first.first] = e.first.second;
+  for (const std::uint64_t e : directed) {
+    const int a = int(e >> 32), b = int(e & 0xffffffffu);
+    const bool twin = std::binary_search(directed.begin(), directed.end(), key(b, a));
+    if (!twin || a < b) ++edges;
+    if (!twin) borderNext[a] = b;
   }
   t.borderLoops = countBorderLoops(borderNext);
   long vertices = 0;
