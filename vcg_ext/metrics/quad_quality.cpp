@@ -71,20 +71,21 @@ void measureBothWays(const QuadMesh& quads, const ClosestPointIndex& surfaceInde
 
 double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
                          const std::vector<Vec3>& surfacePoints) {
-  if (quads.quads.empty()) return std::numeric_limits<double>::infinity();
-  double distance = 0;
-  measureBothWays(quads, surfaceIndex, surfacePoints, [&](const Vec3&, double d) { distance = std::max(distance, d); });
-  return distance;
+  return measureDeviation(quads, surfaceIndex, surfacePoints, std::numeric_limits<double>::infinity()).distance;
 }
 
-std::vector<Vec3> pointsFartherThan(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
-                                    const std::vector<Vec3>& surfacePoints, double limit) {
-  std::vector<Vec3> far;
-  if (quads.quads.empty()) return far;
-  measureBothWays(quads, surfaceIndex, surfacePoints, [&](const Vec3& p, double d) {
-    if (d > limit) far.push_back(p);
+SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                                  const std::vector<Vec3>& surfacePoints, double limit) {
+  SurfaceDeviation d;
+  if (quads.quads.empty()) {
+    d.distance = std::numeric_limits<double>::infinity();
+    return d;
+  }
+  measureBothWays(quads, surfaceIndex, surfacePoints, [&](const Vec3& p, double distance) {
+    d.distance = std::max(d.distance, distance);
+    if (distance > limit) d.farPoints.push_back(p);
   });
-  return far;
+  return d;
 }
 
 double scaledJacobian(const QuadMesh& mesh, int q) {

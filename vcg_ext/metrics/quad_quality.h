@@ -26,10 +26,15 @@ namespace fcql {
 double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
                          const std::vector<Vec3>& surfacePoints);
 
-/// The points the Hausdorff distance measures (either way) that lie farther than `limit`
-/// from the other side: where the quads leave the surface or fail to cover it.
-std::vector<Vec3> pointsFartherThan(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
-                                    const std::vector<Vec3>& surfacePoints, double limit);
+/// The Hausdorff distance (as above) and the points it measures, either way, that lie
+/// farther than `limit` from the other side: where the quads leave the surface or fail to
+/// cover it.
+struct SurfaceDeviation {
+  double distance = 0;
+  std::vector<Vec3> farPoints;
+};
+SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
+                                  const std::vector<Vec3>& surfacePoints, double limit);
 
 /// Scaled Jacobian of quad q of `mesh` (see above).
 double scaledJacobian(const QuadMesh& mesh, int q);

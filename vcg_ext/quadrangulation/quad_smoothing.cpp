@@ -40,6 +40,14 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
   return sharp;
 }
 
+/// Per vertex, the quads that have it as a corner.
+std::vector<std::vector<int>> quadsAroundVertices(const QuadMesh& quads) {
+  std::vector<std::vector<int>> quadsOf(quads.numVertices());
+  for (int q = 0; q < quads.numQuads(); ++q)
+    for (int v : quads.quads[q]) quadsOf[v].push_back(q);
+  return quadsOf;
+}
+
 /// Vertices of quads still folded or nearly flat (scaled Jacobian ≤ kMinScaledJacobian) try a
 /// few positions and keep the one that most raises the worst scaled Jacobian of their quads:
 /// the parallelogram completion a + c − b of each of their quads (a, c its neighbours there,
@@ -48,10 +56,7 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
 /// Laplacian pulls its inner vertex towards the corner, the completion pushes it out.
 void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<char>& fixed,
               const std::vector<std::vector<int>>& neighbours, SmoothingReport& report) {
-  const int nv = quads.numVertices();
-  std::vector<std::vector<int>> quadsOf(nv);
-  for (int q = 0; q < quads.numQuads(); ++q)
-    for (int v : quads.quads[q]) quadsOf[v].push_back(q);
+  const std::vector<std::vector<int>> quadsOf = quadsAroundVertices(quads);
   auto worstAround = [&](int v) {
     double worst = 1;
     for (int q : quadsOf[v]) worst = std::min(worst, scaledJacobian(quads, q));
@@ -209,9 +214,7 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   };
   std::map<std::array<long long, 3>, std::vector<int>> cells;
   for (int i = 0; i < int(far.size()); ++i) cells[cellOf(far[i])].push_back(i);
-  std::vector<std::vector<int>> quadsOf(nv);
-  for (int q = 0; q < quads.numQuads(); ++q)
-    for (int v : quads.quads[q]) quadsOf[v].push_back(q);
+  const std::vector<std::vector<int>> quadsOf = quadsAroundVertices(quads);
   std::vector<double> before(quads.numQuads());
   for (int q = 0; q < quads.numQuads(); ++q) before[q] = scaledJacobian(quads, q);
   // Vertex by vertex in index order: a return that folds or flattens one of the vertex's

@@ -93,20 +93,22 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   // Smoothing may have slid vertices off a sharp tip, which the sampled mesh covered: where
   // the quads stray too far, undo it around those points (a few rounds, while it helps)
   // before sampling finer.
+  // Each measurement also gives the far points the next round starts from.
   auto measure = [&](QuadrangulationResult& q) {
-    q.deviation = hausdorffDistance(q.mesh, surface, samples);
+    SurfaceDeviation d = measureDeviation(q.mesh, surface, samples, limit);
+    q.deviation = d.distance;
     for (int round = 0; round < 3 && q.deviation > limit; ++round) {
       const std::vector<Vec3> smoothed = q.mesh.positions;
-      const int restored = restoreSampledPositions(q.mesh, q.sampledPositions,
-                                                   pointsFartherThan(q.mesh, surface, samples, limit),
-                                                   2 * q.targetEdgeLength);
-      const double deviation = restored > 0 ? hausdorffDistance(q.mesh, surface, samples) : q.deviation;
-      if (!(deviation < q.deviation)) {
+      const int restored = restoreSampledPositions(q.mesh, q.sampledPositions, d.farPoints, 2 * q.targetEdgeLength);
+      if (restored == 0) break;
+      SurfaceDeviation after = measureDeviation(q.mesh, surface, samples, limit);
+      if (!(after.distance < q.deviation)) {
         q.mesh.positions = smoothed;
         break;
       }
       q.restoredVertices += restored;
-      q.deviation = deviation;
+      q.deviation = after.distance;
+      d = std::move(after);
     }
   };
   measure(r);
