@@ -305,12 +305,11 @@ TEST(Quadrangulation, UnusedVerticesDoNotCountAsSurface) {
   EXPECT_LT(r.deviationLimit, 0.011 * makeRoundedBox().boundingBoxDiagonal()) << "the limit follows the surface's size";
 }
 
-TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
-  // A t-junction: patch A's right side is two segments (1, 2), the left sides of patches B and
-  // C; A's left side is segment 0. Opposite single segments are chord classes: {1, 3}, {2, 4},
-  // {5, 6} (A's top and bottom), {7, 8} (B's), {9, 10} (C's). Only A's left-right equality
-  // links classes: 0 = 1 + 2. Target edge 1, so the ideal counts are the lengths.
-  const std::vector<double> length = {10, 3, 3, 3.2, 2.9, 4, 5, 6, 6.4, 2.2, 2.6};
+namespace {
+
+/// Three patches around one t-junction, segments of the given lengths (11): A (bottom 5, right
+/// 1 + 2, top 6, left 0), B (7, 3, 8, 1) and C (9, 4, 10, 2); B and C sit on A's right side.
+PatchGraph tJunctionGraph(const std::vector<double>& length) {
   PatchGraph graph;
   for (double l : length) {
     LayoutSegment seg;
@@ -327,6 +326,18 @@ TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
     return ps;
   };
   graph.patches = {patch({5}, {1, 2}, {6}, {0}), patch({7}, {3}, {8}, {1}), patch({9}, {4}, {10}, {2})};
+  return graph;
+}
+
+}  // namespace
+
+TEST(Quadrangulation, SideLengthsSolvedByPartsAreOptimal) {
+  // A t-junction: patch A's right side is two segments (1, 2), the left sides of patches B and
+  // C; A's left side is segment 0. Opposite single segments are chord classes: {1, 3}, {2, 4},
+  // {5, 6} (A's top and bottom), {7, 8} (B's), {9, 10} (C's). Only A's left-right equality
+  // links classes: 0 = 1 + 2. Target edge 1, so the ideal counts are the lengths.
+  const std::vector<double> length = {10, 3, 3, 3.2, 2.9, 4, 5, 6, 6.4, 2.2, 2.6};
+  const PatchGraph graph = tJunctionGraph(length);
   const SideLengths lengths = solveSideLengths(graph, 1.0, 30);
   EXPECT_EQ(lengths.parts, 4);     // {0, 1–3, 2–4}, {5, 6}, {7, 8}, {9, 10}
   EXPECT_EQ(lengths.programs, 1);  // only the first needs lp_solve
@@ -359,22 +370,7 @@ TEST(Quadrangulation, SideLengthsCanDropTheStretchBound) {
   // at least floor(75 / 1.5) = 50 quads, while segment 0 (10 long) may get at most
   // 4·10 + 4 = 44. With the bound, A's sides cannot agree; without it they do.
   const std::vector<double> length = {10, 3, 3, 75, 2.9, 4, 5, 6, 6.4, 2.2, 2.6};
-  PatchGraph graph;
-  for (double l : length) {
-    LayoutSegment seg;
-    seg.length = l;
-    graph.segments.push_back(seg);
-  }
-  auto patch = [](std::vector<int> bottom, std::vector<int> right, std::vector<int> top, std::vector<int> left) {
-    PatchSides ps;
-    int k = 0;
-    for (const auto& side : {bottom, right, top, left}) {
-      for (int s : side) ps.sides[k].push_back({s, false, 0});
-      ++k;
-    }
-    return ps;
-  };
-  graph.patches = {patch({5}, {1, 2}, {6}, {0}), patch({7}, {3}, {8}, {1}), patch({9}, {4}, {10}, {2})};
+  const PatchGraph graph = tJunctionGraph(length);
   const SideLengths bounded = solveSideLengths(graph, 1.0, 30);
   EXPECT_EQ(bounded.inconsistentPatches, std::vector<int>{0});
   EXPECT_GE(bounded.segments[3], 50);
