@@ -15,6 +15,7 @@ namespace fcql {
 LayoutParameters readLayoutParameters(const CommandLine& cl) {
   LayoutParameters p;
   p.ilpTimeLimit = cl.number("ilp-time-limit", p.ilpTimeLimit, 1.0, 86400.0);
+  p.ilpStall = cl.number("ilp-stall", p.ilpStall, 0.0, 86400.0);
   return p;
 }
 
@@ -59,6 +60,7 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
   for (const auto& h : ls.patches.cornerHistogram()) corners.push_back({std::to_string(h.first), h.second});
   stats.setCounts("layout.corner_histogram", corners);
   stats.set("layout.ilp_time_limit_hit", ls.layout.ilpTimeLimitHit);
+  stats.set("layout.ilp_stalled", ls.layout.ilpStalled);
   stats.set("time_s.ilp", ls.layout.ilpSeconds);
   stats.set("time_s.cycle_tracing", ls.layout.cycleTracingSeconds);
   stats.set("time_s.propagation", ls.layout.propagationSeconds);
@@ -68,7 +70,7 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
 
 int layoutCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
-                 {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit"}, {"quiet"});
+                 {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall"}, {"quiet"});
   if (!cl.has("out")) throw UsageError("missing --out DIR");
   bool quiet = cl.has("quiet");
   TracingParameters tp = readTracingParameters(cl);

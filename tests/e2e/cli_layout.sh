@@ -80,6 +80,7 @@ expect_usage_error phi_low "phi must be between 1 and 45" trace --example sphere
 expect_usage_error phi_high "phi must be between 1 and 45" layout --example sphere --phi 50
 expect_usage_error k_text "k must be an integer" layout --example sphere --k ten
 expect_usage_error ilp "ilp-time-limit must be between 1" layout --example sphere --ilp-time-limit 0
+expect_usage_error ilp_stall "ilp-stall must be between 0" layout --example sphere --ilp-stall -1
 "$fcql" layout --example sphere --quiet 2>"$tmp/stderr"
 [ $? -eq 2 ] && grep -q "missing --out DIR" "$tmp/stderr" || fail "no --out: $(cat "$tmp/stderr")"
 

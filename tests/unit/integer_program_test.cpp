@@ -141,3 +141,28 @@ TEST(IntegerProgram, RoundingTheRelaxationGivesAFeasibleIntegerSolution) {
   EXPECT_EQ(i.status, IntegerProgram::Status::Optimal);
   EXPECT_EQ(i.values[z], 2);
 }
+
+TEST(IntegerProgram, StopsWhenTheBestSolutionStopsImproving) {
+  // Jeroslow's program: max Σ w_j x_j with 2 Σ x_j ≤ 41. Any 20 items are a solution, found at
+  // once, but the LP bound of nearly every node stays above the best solution, so branch and
+  // bound cannot prove optimality in any reasonable time: only the stall limit stops it early.
+  const int n = 41;
+  IntegerProgram ip;
+  ip.setMaximize(true);
+  std::vector<std::pair<int, double>> terms;
+  for (int j = 0; j < n; ++j) terms.push_back({ip.addBinary(1 + 0.001 * j), 2.0});
+  ip.addConstraint(terms, Sense::LessEqual, n);
+  ip.setStallLimit(0.5);
+  const auto r = ip.solve(120);
+  ASSERT_EQ(r.status, IntegerProgram::Status::Stalled) << r.message;
+  ASSERT_TRUE(r.hasSolution());
+  EXPECT_LT(r.seconds, 30) << "stopped by the stall limit, long before the time limit";
+  double items = 0, value = 0;
+  for (int j = 0; j < n; ++j) {
+    EXPECT_TRUE(r.values[j] == 0 || r.values[j] == 1);
+    items += r.values[j];
+    value += (1 + 0.001 * j) * r.values[j];
+  }
+  EXPECT_EQ(items, 20) << "a best solution takes as many items as fit";
+  EXPECT_NEAR(r.objective, value, 1e-9);
+}

@@ -31,6 +31,7 @@ const char* toString(IntegerProgram::Status status) {
   switch (status) {
     case IntegerProgram::Status::Optimal: return "optimal";
     case IntegerProgram::Status::TimeLimit: return "time limit reached, best solution found kept";
+    case IntegerProgram::Status::Stalled: return "best solution stopped improving, kept";
     case IntegerProgram::Status::Infeasible: return "infeasible";
     case IntegerProgram::Status::Unbounded: return "unbounded";
     default: return "failed";
@@ -53,6 +54,30 @@ IntegerProgram::Result emptyProgramResult() {
 
 /// lp_solve may "solve" an unbounded model to its infinity (1e30).
 bool objectiveAtInfinity(lprec* lp) { return std::abs(get_objective(lp)) >= 0.1 * get_infinite(lp); }
+
+/// What branch and bound has found so far, for the stall limit: lp_solve reports each
+/// improved solution (a message callback) and asks often whether to stop (an abort callback).
+struct StallWatch {
+  double limitSeconds = 0;
+  bool haveSolution = false;
+  bool stopped = false;
+  std::chrono::steady_clock::time_point lastImprovement;
+};
+
+void __WINAPI noteImprovement(lprec*, void* handle, int) {
+  auto* watch = static_cast<StallWatch*>(handle);
+  watch->haveSolution = true;
+  watch->lastImprovement = std::chrono::steady_clock::now();
+}
+
+int __WINAPI stallReached(lprec*, void* handle) {
+  auto* watch = static_cast<StallWatch*>(handle);
+  if (!watch->haveSolution) return FALSE;
+  const double idle = std::chrono::duration<double>(std::chrono::steady_clock::now() - watch->lastImprovement).count();
+  if (idle < watch->limitSeconds) return FALSE;
+  watch->stopped = true;
+  return TRUE;
+}
 
 }  // namespace
 
@@ -109,7 +134,23 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   if (!lp) return result;
   set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
   set_mip_gap(lp.get(), FALSE, relativeGap_);
+  StallWatch watch;
+  if (stallSeconds_ > 0) {
+    watch.limitSeconds = stallSeconds_;
+    put_msgfunc(lp.get(), noteImprovement, &watch, MSG_MILPFEASIBLE | MSG_MILPBETTER);
+    put_abortfunc(lp.get(), stallReached, &watch);
+  }
   int ret = ::solve(lp.get());
+  if (watch.stopped && (ret == SUBOPTIMAL || ret == USERABORT) && get_solutioncount(lp.get()) > 0) {
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.status = Status::Stalled;
+    result.values.assign(n, 0.0);
+    get_variables(lp.get(), result.values.data());
+    result.objective = get_objective(lp.get());
+    result.message = "lp_solve's best solution did not improve for " + std::to_string(int(std::lround(stallSeconds_))) +
+                     " s; it is kept (not proven optimal)";
+    return result;
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto readSolution = [&]() {
     result.values.assign(n, 0.0);

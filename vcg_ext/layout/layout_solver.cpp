@@ -31,8 +31,9 @@ bool pathsMeet(const TracedPath& p, const TracedPath& q) {
 void noteSelection(Layout& layout, const SelectionResult& r) {
   layout.ilpSeconds += r.seconds;
   layout.iterations += 1;
-  if (r.status == IntegerProgram::Status::TimeLimit) {
-    layout.ilpTimeLimitHit = true;
+  if (r.status == IntegerProgram::Status::Stalled) ++layout.ilpStalled;
+  if (r.status == IntegerProgram::Status::TimeLimit) layout.ilpTimeLimitHit = true;
+  if (r.status == IntegerProgram::Status::TimeLimit || r.status == IntegerProgram::Status::Stalled) {
     layout.messages.push_back("0-1 program " + std::to_string(layout.iterations) + ": " + r.message);
   }
 }
@@ -42,6 +43,7 @@ void noteSelection(Layout& layout, const SelectionResult& r) {
 void LayoutParameters::validate() const {
   if (!(ilpTimeLimit >= 1) || !std::isfinite(ilpTimeLimit))
     throw std::invalid_argument("ilp_time_limit must be at least 1 second");
+  if (!(ilpStall >= 0) || !std::isfinite(ilpStall)) throw std::invalid_argument("ilp_stall must be 0 or more seconds");
   if (maxIterations < 1) throw std::invalid_argument("the solving cycle needs at least one iteration");
 }
 
@@ -60,7 +62,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   const int numPorts = int(graph.ports().size());
 
   // 1. The first 0-1 program on all candidates.
-  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, graph.parameters().threads);
+  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, graph.parameters().threads, params.ilpStall);
   noteSelection(layout, first);
   for (int a : first.selected) {
     const auto& c = candidates.arcs[a];
@@ -91,7 +93,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
-    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, graph.parameters().threads);
+    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, graph.parameters().threads, params.ilpStall);
     noteSelection(layout, r);
     if (r.selected.empty()) break;
     for (int a : r.selected) {

@@ -23,6 +23,9 @@ namespace fcql {
 
 struct LayoutParameters {
   double ilpTimeLimit = 60;  ///< seconds per 0-1 program (≥ 1)
+  /// Branch and bound stops once its best solution has not improved for this many seconds
+  /// (0: only the time limit stops it). See IntegerProgram::setStallLimit.
+  double ilpStall = 5;
   int maxIterations = 20;    ///< bound on the solving cycle
   bool propagate = true;     ///< step 3
 
@@ -48,6 +51,7 @@ struct Layout {
   std::vector<int> unresolvedPorts;  ///< dangling ports no propagation could resolve
   int deadEndsRemoved = 0;        ///< separatrices dropped by removeDeadEnds
   bool ilpTimeLimitHit = false;
+  int ilpStalled = 0;             ///< programs stopped because the best solution stopped improving
   std::vector<std::string> messages; ///< solver notes worth logging
   double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0;
 };

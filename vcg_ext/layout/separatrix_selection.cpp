@@ -1,11 +1,13 @@
 #include "layout/separatrix_selection.h"
 
+#include "layout/independent_set_reduction.h"
 #include "mesh/union_find.h"
 #include "mesh/worker_threads.h"
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 
@@ -133,7 +135,7 @@ std::vector<std::vector<int>> withoutContainedRows(const std::vector<std::vector
 }  // namespace
 
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
-                                   int threads) {
+                                   int threads, double stallSeconds) {
   SelectionResult out;
   const auto start = std::chrono::steady_clock::now();  // the program's construction counts too
   auto free = [&](int p) { return portFree.empty() || (p >= 0 && p < int(portFree.size()) && portFree[p]); };
@@ -166,6 +168,15 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
   for (const auto& clique : conflictCliques(h, variableOf, threads)) rows.push_back(clique);
   rows = withoutContainedRows(rows, n);
   out.variables = n;
+  // Variables another one dominates are left out (exact: an optimal solution remains).
+  const std::vector<char> leftOut = removeDominatedVariables(rows, weight).fixedToZero;
+  out.dominated = int(std::count(leftOut.begin(), leftOut.end(), 1));
+  if (out.dominated > 0) {
+    for (auto& row : rows) row.erase(std::remove_if(row.begin(), row.end(), [&](int v) { return leftOut[v]; }), row.end());
+    rows.erase(std::remove_if(rows.begin(), rows.end(), [](const std::vector<int>& row) { return row.size() < 2; }),
+               rows.end());
+    rows = withoutContainedRows(rows, n);
+  }
   out.constraints = int(rows.size());
 
   // The program splits into independent parts (connected through shared constraints).
@@ -173,7 +184,8 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
   for (const auto& row : rows)
     for (std::size_t i = 1; i < row.size(); ++i) uf.unite(row[0], row[i]);
   std::vector<std::vector<int>> members(n), rowsOf(n);
-  for (int v = 0; v < n; ++v) members[uf.find(v)].push_back(v);
+  for (int v = 0; v < n; ++v)
+    if (!leftOut[v]) members[uf.find(v)].push_back(v);
   for (int r = 0; r < int(rows.size()); ++r) rowsOf[uf.find(rows[r][0])].push_back(r);
 
   // Greedy (best ratio first) is the fallback when lp_solve cannot do better in time.
@@ -200,7 +212,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     return objective;
   };
 
-  int usedGreedy = 0, parts = 0;
+  int usedGreedy = 0, parts = 0, programs = 0, timedOut = 0, stalled = 0;
   for (int root = 0; root < n; ++root) {
     const auto& vars = members[root];
     if (vars.empty()) continue;
@@ -214,6 +226,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     IntegerProgram ip;
     ip.setMaximize(true);
     ip.setRelativeGap(1e-3);  // within 0.1% of the optimum of Eq. 4
+    ip.setStallLimit(stallSeconds);
     std::vector<int> local(n, -1);
     for (int v : vars) local[v] = ip.addBinary(weight[v]);
     for (int r : rowsOf[root]) {
@@ -226,20 +239,28 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     IntegerProgram::Result r = ip.solve(budget);
     if (r.status == IntegerProgram::Status::Infeasible || r.status == IntegerProgram::Status::Unbounded)
       throw std::runtime_error("separatrix selection: " + r.message);  // impossible for this model: a bug
-    if (r.status == IntegerProgram::Status::TimeLimit) out.status = IntegerProgram::Status::TimeLimit;
+    ++programs;
+    if (r.status == IntegerProgram::Status::TimeLimit) ++timedOut;
+    if (r.status == IntegerProgram::Status::Stalled) ++stalled;
     if (!r.hasSolution() || r.objective < greedyObjective - 1e-9) {
       ++usedGreedy;
-      out.status = IntegerProgram::Status::TimeLimit;
       for (int v : vars) chosen[v] = greedyTaken[v];
     } else {
       for (int v : vars) chosen[v] = r.values[local[v]] > 0.5;
     }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (out.status == IntegerProgram::Status::TimeLimit)
-    out.message = "lp_solve reached the time limit on " + std::to_string(parts) + " independent parts; " +
-                  (usedGreedy ? std::to_string(usedGreedy) + " of them use the greedy selection, which was better"
+  out.status = timedOut > 0 || usedGreedy > 0 ? IntegerProgram::Status::TimeLimit
+               : stalled > 0                  ? IntegerProgram::Status::Stalled
+                                              : IntegerProgram::Status::Optimal;
+  if (out.status != IntegerProgram::Status::Optimal) {
+    auto n = [](int k) { return std::to_string(k); };
+    out.message = "lp_solve had " + n(programs) + " of " + n(parts) + " independent parts to solve; time limit reached: " +
+                  n(timedOut) + ", stopped after " + n(int(std::lround(stallSeconds))) +
+                  " s without a better solution: " + n(stalled) + "; " +
+                  (usedGreedy ? "the greedy selection was better on " + n(usedGreedy)
                               : std::string("the best solutions found are kept"));
+  }
   for (int v = 0; v < n; ++v)
     if (chosen[v]) out.selected.push_back(arcOf[v]);
   std::sort(out.selected.begin(), out.selected.end());

@@ -16,14 +16,18 @@ struct SelectionResult {
   IntegerProgram::Status status = IntegerProgram::Status::Optimal;
   std::string message;        ///< lp_solve's word when not simply optimal
   double seconds = 0;
-  int variables = 0, constraints = 0;
+  int variables = 0;   ///< one per candidate both of whose ports are free
+  int dominated = 0;   ///< variables left out because another one dominates them
+  int constraints = 0; ///< rows of the program lp_solve gets (after leaving those out)
 };
 
 /// `portFree[p]` = 1 if port p may receive a separatrix (empty: all ports). Arcs touching a
 /// port that is not free are left out. Throws std::runtime_error with lp_solve's reason if no
 /// solution could be found (the empty selection is always feasible, so this means a solver
 /// failure). The conflict cliques are found on `threads` threads (0: all hardware threads).
+/// Branch and bound on each part stops once its best solution has not improved for
+/// `stallSeconds` (0: never), and all parts together within `timeLimitSeconds`.
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
-                                   int threads = 0);
+                                   int threads = 0, double stallSeconds = 0);
 
 }  // namespace fcql
