@@ -171,17 +171,20 @@ done
   stage; the layout's files are formatted on a second thread while the quads are made, so
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
-  issue's target, 10× below the paper's time, is met on rockerarm only (16–17.5× on the
-  layout, 12–14× on the whole run in two bench runs on 2026-12-02; the comparison is unfair
+  issue's target, 10× below the paper's time, is met on rockerarm only (16–19.5× on the
+  layout, 12–15× on the whole run in three bench runs on 2026-12-02; the comparison is unfair
   the other way: our rockerarm has 20K faces, the paper's 70K); the bunny is 7.5–9× below on
-  the layout and 6–7× on the whole run, fertility 6× and 4×. Times vary by 10–40% from run
-  to run on this machine (a shared virtual machine: the bunny's layout took 2.9 s in one
-  bench run and 3.5 s in the next, with the same tracing code).
+  the layout and 6–7× on the whole run, fertility 6–7.6× and 4.4–5.7×, the dragon 4.7× and
+  2.8× (it was 1.0× and 0.8× before its first 0-1 program stopped once its best solution
+  stalled, below). Times vary by 10–40% from run to run on this machine (a shared virtual
+  machine: the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the
+  same tracing code).
 - **Quality**: every mesh is within 1% of the diagonal. Where the quads stray farther, the
   quad stage first undoes the smoothing around those points (`quad.restored_vertices`:
   smoothing keeps vertices on the surface but lets them slide off sharp tips, which are then
-  no longer covered; 11–23 vertices on fandisk, fertility, joint and rockerarm, about 1200 on the
-  dragon) and only then samples again with smaller quads (the dragon, once). Misalignment is high on the open
+  no longer covered; 11–23 vertices on fandisk, fertility, joint and rockerarm) and only then
+  samples again with smaller quads (no shared mesh needs that now; the dragon did, once,
+  with the layout it got at the 60 s limit). Misalignment is high on the open
   surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
   with their boundaries fixed by arc length, which shears the grid when the two long sides of a
   strip are not parallel; elsewhere 17–39% of the quads are more than π/16 off the field,
@@ -206,18 +209,21 @@ done
   singularity's only separatrix used to end inside a patch (a slit, which no grid fits): the
   layout removes such dead ends (`layout.dead_ends_removed`), the singularity lies inside a
   patch with one corner, which gets two corners added on its boundary and is cut as a 3-gon
-  (`layout.added_corners`). Its first 0-1 program (21K candidates, one independent part) runs
-  into the 60 s limit (lp_solve's best selection by then is kept), and its 322 t-junctions
-  tie 800 chord classes by 500 side equalities that no positive integers satisfy (zero
-  chains): 113–119 patches are split over the rounds. The side-length
+  (`layout.added_corners`). Its first 0-1 program has 21K candidates in one independent
+  part; half of them are dominated and left out (below), and lp_solve's LP relaxation of the
+  rest takes about 5.5 s. Branch and bound finds its best selection within a second after
+  that and then stops, 5 s without a better one (`--ilp-stall`); it used to run into the 60 s
+  limit without finding anything better. Its t-junctions (311) tie chord classes by side
+  equalities that no positive integers satisfy (zero chains): 113–130 patches are split over
+  the rounds. The side-length
   programs now take seconds (one cost variable per chord class instead of one per segment: the
   largest part's relaxation is proved infeasible in 0.4 s instead of 19 s; a part branch and
   bound cannot settle in time is solved by rounding its LP relaxation), and the dragon gets
-  its quad mesh: 75K quads within 0.74–0.78% of the surface (one finer pass, after the
-  smoothing is undone around 1173 vertices; before that change, 81K–96K quads still 1.0–1.2%
-  away after 4 finer passes), with about 20 folded quads (scaled Jacobian down to about −0.6; the
-  three worst lie across creases of 137–144° on its spikes, features finer than the quads). Its figures change from run to run, as lp_solve's selection at the time limit
-  does. With `--ilp-time-limit 5` the whole run takes 81 s: the greedy
+  its quad mesh: 52K quads within 0.90% of the surface at the first pass (with the layout
+  found at the 60 s limit: 75K quads within 0.74–0.78%, after one finer pass), with 20–30
+  folded quads (scaled Jacobian down to about −0.6; the
+  three worst lie across creases of 137–144° on its spikes, features finer than the quads). Its figures change from run to run, as lp_solve's selection when it stops
+  does. Before the changes below, with `--ilp-time-limit 5` the whole run took 81 s: the greedy
   selection (5288 patches, 481 t-junctions), 395 patches split in 7 rounds, 88K quads within
   0.81% of the surface, scaled Jacobian down to −0.23 (before the corner rule above its splits
   did not converge in 8 rounds).
@@ -371,6 +377,41 @@ whole command, output files included):
 | bunny (α 15, k 30) | 0.46 → 0.42 s | 2.55 → 1.86 s (1.37×) | 0.30 → 0.26 s | 5.03 → 3.68 s (1.37×) |
 | fertility (α 30, k 30) | 0.40 → 0.40 s | 2.80 → 1.76 s (1.59×) | 1.06 → 0.76 s | 6.77 → 4.68 s (1.45×) |
 | rockerarm (α 30, k 30) | 0.37 → 0.34 s | 1.76 → 1.24 s (1.42×) | 0.20 → 0.25 s | 4.79 → 3.65 s (1.31×) |
+
+### The dragon's 0-1 program (fourth session, 2026-12-02)
+
+The dragon's first program (21,384 candidates, 19,484 rows after dropping contained ones, one
+independent part whose conflict graph has 812K edges) cost lp_solve 15 s for its LP relaxation
+alone; branch and bound found its first selection at 17 s and its best (objective 4069.1) at
+24 s, then ran to the 60 s limit. The LP relaxation resists lp_solve's options (dual or
+primal simplex, the four pricing rules, crash bases, improve levels, presolve: 5.4–60 s on
+the reduced program below), so the program itself was made smaller and the search shorter:
+- Dominated candidates are left out: the program is a maximum-weight independent set, and a
+  candidate u can go when a candidate v it conflicts with weighs at least as much and
+  conflicts with nothing u does not (any selection holding u can hold v instead). Repeated
+  until nothing changes (6 sweeps on the dragon, 0.1 s), this keeps 10,823 candidates and 19%
+  of the conflicts (153K edges); the LP relaxation takes 5.5 s, the first selection comes at
+  6 s and the best one is better: 4087.4 including the candidates the cycle no longer needs
+  to weigh, against 4069.1. Exact: a test compares the optimum with and without the
+  reduction on 60 random programs by brute force.
+- Branch and bound stops once its best solution has not improved for 5 s (`--ilp-stall`):
+  lp_solve reports each improved solution to a callback, and an abort callback ends the
+  search. On the dragon the best selection comes within a second of the first; what came
+  later in 60 s added 0.002% to the objective.
+
+The other eleven meshes give byte-identical separatrices (their programs were already solved
+to optimality; fertility's 0-1 programs 0.77 → 0.64 s). The dragon, before (HEAD 58e5121)
+and after, one run each:
+
+| | layout | 0-1 programs | patches | t-junctions | quads | Hausdorff | whole run |
+|---|---:|---:|---:|---:|---:|---:|---:|
+| before | 63.8 s | 60.6 s | 4714 | 322 | 75462 | 0.74% (one finer pass) | 82.2 s |
+| after | 13.7 s | 11.3 s | 4731 | 311 | 52174 | 0.90% | 22.6 s |
+
+What is left on the dragon: lp_solve's LP relaxation (5.5 s), the 5 s of stall, and the
+side-length programs of its three zero-chain rounds (2.2 s each: a part of 1300–2300
+variables stops at its 2 s budget; stopping it after 0.3 s without improvement saved 3 s
+but gave other, slightly worse counts from run to run, and was not kept).
 
 ### Borders, tips and zero chains (third session, 2026-12-02)
 
