@@ -391,8 +391,8 @@ the reduced program below), so the program itself was made smaller and the searc
   conflicts with nothing u does not (any selection holding u can hold v instead). Repeated
   until nothing changes (6 sweeps on the dragon, 0.1 s), this keeps 10,823 candidates and 19%
   of the conflicts (153K edges); the LP relaxation takes 5.5 s, the first selection comes at
-  6 s and the best one is better: 4087.4 including the candidates the cycle no longer needs
-  to weigh, against 4069.1. Exact: a test compares the optimum with and without the
+  6 s and the best one is better: 4087.4 (counting the candidates left without conflicts,
+  which are taken outright), against 4069.1. Exact: a test compares the optimum with and without the
   reduction on 60 random programs by brute force.
 - Branch and bound stops once its best solution has not improved for 5 s (`--ilp-stall`):
   lp_solve reports each improved solution to a callback, and an abort callback ends the
