@@ -56,7 +56,6 @@ void addTraceFigures(FilterOutcome& o, const TraceStepResult& t) {
   addInt(o, "graph_g_arcs", t.trace.graph->numArcs());
   addInt(o, "h_arcs", long(t.trace.h.arcs.size()));
   addInt(o, "tangential_pairs", long(t.trace.h.tangentialPairs.size()));
-  addInt(o, "orthogonal_pairs", long(t.trace.h.orthogonalPairs.size()));
   addSeconds(o, "time_graph", t.trace.graphSeconds);
   addSeconds(o, "time_tracing", t.trace.tracingSeconds);
 }

@@ -49,8 +49,7 @@ std::vector<std::string> describeTrace(const TraceResult& t) {
                   std::to_string(t.graph->sampling().numSamples()) + " auxiliary points, " +
                   std::to_string(t.graph->ports().size()) + " ports (" + params + ")");
   lines.push_back("Graph H: " + std::to_string(t.h.arcs.size()) + " candidate separatrices, " +
-                  std::to_string(t.h.tangentialPairs.size()) + " tangential and " +
-                  std::to_string(t.h.orthogonalPairs.size()) + " orthogonal crossing pairs");
+                  std::to_string(t.h.tangentialPairs.size()) + " pairs crossing tangentially");
   return lines;
 }
 

@@ -47,8 +47,7 @@ TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, 
   t.graphSeconds = std::chrono::duration<double>(built - start).count();
   t.tracingSeconds = std::chrono::duration<double>(traced - built).count();
   progress(quiet, "graph H: " + std::to_string(t.h.arcs.size()) + " candidate separatrices, " +
-                      std::to_string(t.h.tangentialPairs.size()) + " tangential and " +
-                      std::to_string(t.h.orthogonalPairs.size()) + " orthogonal crossing pairs");
+                      std::to_string(t.h.tangentialPairs.size()) + " pairs crossing tangentially");
   stats.set("params.alpha", params.alpha);
   stats.set("params.k", params.k);
   stats.set("params.phi", params.phiDeg);
@@ -58,7 +57,6 @@ TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, 
   stats.set("graph_g.ports", int(t.graph->ports().size()));
   stats.set("graph_h.arcs", int(t.h.arcs.size()));
   stats.set("graph_h.tangential_pairs", int(t.h.tangentialPairs.size()));
-  stats.set("graph_h.orthogonal_pairs", int(t.h.orthogonalPairs.size()));
   stats.set("time_s.graph", t.graphSeconds);
   stats.set("time_s.tracing", t.tracingSeconds);
   return t;

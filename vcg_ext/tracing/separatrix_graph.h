@@ -23,9 +23,8 @@ struct CandidateSeparatrix {
 struct SeparatrixGraph {
   std::vector<CandidateSeparatrix> arcs;
   /// Pairs (i < j) of arcs that cross tangentially somewhere (they can't both be selected).
+  /// Orthogonal crossings constrain nothing and are not listed.
   std::vector<std::pair<int, int>> tangentialPairs;
-  /// Pairs (i < j) of arcs that cross, always orthogonally.
-  std::vector<std::pair<int, int>> orthogonalPairs;
   /// Per port: the arcs incident to it.
   std::vector<std::vector<int>> arcsAtPort;
 };
@@ -36,8 +35,8 @@ SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vect
 /// Runs a search from every port (k sinks, no barriers) and builds H.
 SeparatrixGraph traceCandidateSeparatrices(const GeodesicGraph& graph, const ProgressCallback& progress = nullptr);
 
-/// Classifies every crossing between the arcs of `h` (fills tangentialPairs/orthogonalPairs),
-/// on `threads` threads (0: all hardware threads); the result does not depend on them.
+/// Finds the arcs of `h` that meet tangentially (fills tangentialPairs), on `threads` threads
+/// (0: all hardware threads); the result does not depend on them.
 void classifyCrossings(const SurfaceMesh& mesh, SeparatrixGraph& h, int threads = 0);
 
 }  // namespace fcql
