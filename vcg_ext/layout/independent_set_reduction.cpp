@@ -9,20 +9,22 @@ DominationResult removeDominatedVariables(const std::vector<std::vector<int>>& r
   const int n = int(weight.size());
   DominationResult out;
   out.fixedToZero.assign(n, 0);
-  // Neighbours of each variable: the others of every row it is in.
-  std::vector<std::vector<int>> neighbours(n);
-  for (const auto& row : rows)
-    for (int a : row) {
+  // Neighbours of each variable: the others of every row it is in, each once (rows of
+  // neighbouring triangles overlap heavily: a stamp per variable drops the repeats).
+  std::vector<std::vector<int>> rowsOf(n);
+  for (int r = 0; r < int(rows.size()); ++r)
+    for (int a : rows[r]) {
       if (a < 0 || a >= n) throw std::out_of_range("removeDominatedVariables: a row names an unknown variable");
-      for (int b : row)
-        if (b != a) neighbours[a].push_back(b);
+      rowsOf[a].push_back(r);
     }
-  std::vector<int> degree(n);
-  for (int v = 0; v < n; ++v) {
-    auto& list = neighbours[v];
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    degree[v] = int(list.size());
+  std::vector<std::vector<int>> neighbours(n);
+  std::vector<int> degree(n), stamp(n, -1);
+  for (int a = 0; a < n; ++a) {
+    stamp[a] = a;
+    for (int r : rowsOf[a])
+      for (int b : rows[r])
+        if (stamp[b] != a) stamp[b] = a, neighbours[a].push_back(b);
+    degree[a] = int(neighbours[a].size());
   }
   std::vector<char>& removed = out.fixedToZero;
   std::vector<int> mark(n, -1);  // mark[x] == u: x is in N[u] (set while u is examined)
