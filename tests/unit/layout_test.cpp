@@ -273,3 +273,29 @@ TEST(Layout, SelectionDropsConflictRowsInsideLargerOnes) {
   // Weights are 1/length: {1, 3} (1/2 + 1/1.5) beats {0} (1) and {2, 3} (1/3 + 1/1.5).
   EXPECT_EQ(r.selected, (std::vector<int>{1, 3}));
 }
+
+TEST(Layout, CandidatesAlongOneChordConflictEvenWhenNothingElseCrossesIt) {
+  // Candidates 0 and 1 run along the very same chord of face 0, which no other piece meets;
+  // candidate 2 has face 1 to itself. 0 and 1 overlap tangentially (one row {0, 1}), 2 is free.
+  SeparatrixGraph h;
+  auto candidate = [&](int i, double length, std::vector<PathSegment> segments) {
+    CandidateSeparatrix c;
+    c.portA = 2 * i;
+    c.portB = 2 * i + 1;
+    c.length = length;
+    c.path.segments = std::move(segments);
+    h.arcs.push_back(c);
+  };
+  candidate(0, 1.0, {{0, 0, 0.5, 1.5}});
+  candidate(1, 2.0, {{0, 2, 1.5, 0.5}});  // the opposite direction: the same parity
+  candidate(2, 1.0, {{1, 1, 0.5, 1.5}});
+  h.arcsAtPort.assign(6, {});
+  for (int i = 0; i < 3; ++i) h.arcsAtPort[2 * i] = h.arcsAtPort[2 * i + 1] = {i};
+  classifyCrossings(makeSphere(1), h);
+  ASSERT_EQ(h.tangentialPairs, (std::vector<std::pair<int, int>>{{0, 1}}));
+  SelectionResult r = selectSeparatrices(h, {}, 10);
+  // The row {0, 1} leaves 1 dominated by 0 (as heavy or heavier, the same conflicts): no row is left.
+  EXPECT_EQ(r.dominated, 1);
+  EXPECT_EQ(r.constraints, 0);
+  EXPECT_EQ(r.selected, (std::vector<int>{0, 2})) << "the shorter of the two overlapping ones, and the free one";
+}
