@@ -212,7 +212,7 @@ done
   (`layout.added_corners`). Its first 0-1 program has 21K candidates in one independent
   part; half of them are dominated and left out (below), and lp_solve's LP relaxation of the
   rest takes about 5.5 s. Branch and bound finds its best selection within a second after
-  that and then stops, 5 s without a better one (`--ilp-stall`); it used to run into the 60 s
+  that and then stops, 3 s without a better one (`--ilp-stall`); it used to run into the 60 s
   limit without finding anything better. Its t-junctions (311) tie chord classes by side
   equalities that no positive integers satisfy (zero chains): 113–130 patches are split over
   the rounds. The side-length
@@ -394,14 +394,17 @@ the reduced program below), so the program itself was made smaller and the searc
   6 s and the best one is better: 4087.4 (counting the candidates left without conflicts,
   which are taken outright), against 4069.1. Exact: a test compares the optimum with and without the
   reduction on 60 random programs by brute force.
-- Branch and bound stops once its best solution has not improved for 5 s (`--ilp-stall`):
+- Branch and bound stops once its best solution has not improved for 3 s (`--ilp-stall`):
   lp_solve reports each improved solution to a callback, and an abort callback ends the
   search. On the dragon the best selection comes within a second of the first; what came
-  later in 60 s added 0.002% to the objective.
+  later in 60 s added 0.002% to the objective (improvements 5.9 s and then 4 s apart). A
+  stall limit of 2, 3 or 5 s gives the same layout (4731 patches, 311 t-junctions); the 0-1
+  programs take 7.8, 8.6 and 11.3 s.
 
 The other eleven meshes give byte-identical separatrices (their programs were already solved
 to optimality; fertility's 0-1 programs 0.77 → 0.64 s). The dragon, before (HEAD 58e5121)
-and after, one run each:
+and after (with the stall limit at 5 s; at 3 s, the default now, the layout is the same and
+takes 10.8 s), one run each:
 
 | | layout | 0-1 programs | patches | t-junctions | quads | Hausdorff | whole run |
 |---|---:|---:|---:|---:|---:|---:|---:|

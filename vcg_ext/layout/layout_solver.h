@@ -25,7 +25,7 @@ struct LayoutParameters {
   double ilpTimeLimit = 60;  ///< seconds per 0-1 program (≥ 1)
   /// Branch and bound stops once its best solution has not improved for this many seconds
   /// (0: only the time limit stops it). See IntegerProgram::setStallLimit.
-  double ilpStall = 5;
+  double ilpStall = 3;
   int maxIterations = 20;    ///< bound on the solving cycle
   bool propagate = true;     ///< step 3
 
