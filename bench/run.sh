@@ -172,11 +172,12 @@ done
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
   issue's target, 10× below the paper's time, is met on rockerarm only (16–19.5× on the
-  layout, 12–15× on the whole run in three bench runs on 2026-12-02; the comparison is unfair
+  layout, 12–15× on the whole run in four bench runs on 2026-12-02; the comparison is unfair
   the other way: our rockerarm has 20K faces, the paper's 70K); the bunny is 7.5–9× below on
-  the layout and 6–7× on the whole run, fertility 6–7.6× and 4.4–5.7×, the dragon 4.7× and
-  2.8× (it was 1.0× and 0.8× before its first 0-1 program stopped once its best solution
-  stalled, below). Times vary by 10–40% from run to run on this machine (a shared virtual
+  the layout and 6–7× on the whole run, fertility 6–7.7× and 4.4–5.7× (7.6–7.7× since the
+  conflict cliques per chord), the dragon 5.8× and 3.2× (4.7× and 2.8× with a 5 s stall limit;
+  it was 1.0× and 0.8× before its first 0-1 program stopped once its best solution stalled,
+  below). Times vary by 10–40% from run to run on this machine (a shared virtual
   machine: the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the
   same tracing code).
 - **Quality**: every mesh is within 1% of the diagonal. Where the quads stray farther, the
