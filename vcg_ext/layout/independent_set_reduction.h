@@ -17,8 +17,8 @@ struct DominationResult {
   int rounds = 0;  ///< sweeps over all variables until nothing changed
 };
 
-/// `rows`: "at most one of these" sets of variables in [0, weight.size()), each sorted and
-/// without repeats. Removes dominated variables repeatedly until none is left (a variable
+/// `rows`: "at most one of these" sets of variables in [0, weight.size()), each without
+/// repeats. Removes dominated variables repeatedly until none is left (a variable
 /// left out can make another one dominated). Deterministic: variables are visited in order.
 DominationResult removeDominatedVariables(const std::vector<std::vector<int>>& rows, const std::vector<double>& weight);
 

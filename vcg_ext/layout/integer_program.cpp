@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -147,8 +148,9 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
     result.values.assign(n, 0.0);
     get_variables(lp.get(), result.values.data());
     result.objective = get_objective(lp.get());
-    result.message = "lp_solve's best solution did not improve for " + std::to_string(int(std::lround(stallSeconds_))) +
-                     " s; it is kept (not proven optimal)";
+    char stall[32];
+    std::snprintf(stall, sizeof stall, "%g", stallSeconds_);
+    result.message = std::string("lp_solve's best solution did not improve for ") + stall + " s; it is kept (not proven optimal)";
     return result;
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

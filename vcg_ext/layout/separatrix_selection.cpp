@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -264,7 +264,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     if (r.status == IntegerProgram::Status::Infeasible || r.status == IntegerProgram::Status::Unbounded)
       throw std::runtime_error("separatrix selection: " + r.message);  // impossible for this model: a bug
     ++programs;
-    if (r.status == IntegerProgram::Status::TimeLimit) ++timedOut;
+    if (r.status == IntegerProgram::Status::TimeLimit || !r.hasSolution()) ++timedOut;
     if (r.status == IntegerProgram::Status::Stalled) ++stalled;
     if (!r.hasSolution() || r.objective < greedyObjective - 1e-9) {
       ++usedGreedy;
@@ -274,15 +274,19 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out.status = timedOut > 0 || usedGreedy > 0 ? IntegerProgram::Status::TimeLimit
-               : stalled > 0                  ? IntegerProgram::Status::Stalled
-                                              : IntegerProgram::Status::Optimal;
+  // A part lp_solve settled is never worse than the greedy selection, so the greedy one is
+  // used only where lp_solve stopped early.
+  out.status = timedOut > 0 ? IntegerProgram::Status::TimeLimit
+               : stalled > 0 ? IntegerProgram::Status::Stalled
+                             : IntegerProgram::Status::Optimal;
   if (out.status != IntegerProgram::Status::Optimal) {
-    auto n = [](int k) { return std::to_string(k); };
-    out.message = "lp_solve had " + n(programs) + " of " + n(parts) + " independent parts to solve; time limit reached: " +
-                  n(timedOut) + ", stopped after " + n(int(std::lround(stallSeconds))) +
-                  " s without a better solution: " + n(stalled) + "; " +
-                  (usedGreedy ? "the greedy selection was better on " + n(usedGreedy)
+    auto num = [](int k) { return std::to_string(k); };
+    char stall[32];
+    std::snprintf(stall, sizeof stall, "%g", stallSeconds);
+    out.message = "lp_solve had " + num(programs) + " of " + num(parts) +
+                  " independent parts to solve; time limit reached: " + num(timedOut) + ", stopped after " + stall +
+                  " s without a better solution: " + num(stalled) + "; " +
+                  (usedGreedy ? "the greedy selection was better on " + num(usedGreedy)
                               : std::string("the best solutions found are kept"));
   }
   for (int v = 0; v < n; ++v)
