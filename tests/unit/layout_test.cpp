@@ -245,6 +245,20 @@ TEST(Layout, TJunctionsEndOnTheirSeparatrixOnTwoKittens) {
 
 #include "layout/separatrix_selection.h"
 
+namespace {
+
+/// Candidate i of a hand-made graph H, between its own ports 2i and 2i + 1.
+void addCandidate(SeparatrixGraph& h, int i, double length, std::vector<PathSegment> segments) {
+  CandidateSeparatrix c;
+  c.portA = 2 * i;
+  c.portB = 2 * i + 1;
+  c.length = length;
+  c.path.segments = std::move(segments);
+  h.arcs.push_back(c);
+}
+
+}  // namespace
+
 TEST(Layout, SelectionDropsConflictRowsInsideLargerOnes) {
   // Four candidates with their own ports. In face 0, candidates 0, 1 and 2 cross pairwise
   // in the same direction class (one "at most one" clique); in face 1, candidates 0 and 1
@@ -252,12 +266,7 @@ TEST(Layout, SelectionDropsConflictRowsInsideLargerOnes) {
   // face 2, candidates 0 and 3 cross (a row of its own).
   SeparatrixGraph h;
   auto candidate = [&](int i, double length, std::vector<PathSegment> segments) {
-    CandidateSeparatrix c;
-    c.portA = 2 * i;
-    c.portB = 2 * i + 1;
-    c.length = length;
-    c.path.segments = std::move(segments);
-    h.arcs.push_back(c);
+    addCandidate(h, i, length, std::move(segments));
   };
   candidate(0, 1.0, {{0, 0, 0.5, 1.5}, {1, 0, 0.5, 1.5}, {2, 1, 0.5, 1.5}});
   candidate(1, 2.0, {{0, 2, 0.7, 2.5}, {1, 0, 0.7, 2.5}});
@@ -279,12 +288,7 @@ TEST(Layout, CandidatesAlongOneChordConflictEvenWhenNothingElseCrossesIt) {
   // candidate 2 has face 1 to itself. 0 and 1 overlap tangentially (one row {0, 1}), 2 is free.
   SeparatrixGraph h;
   auto candidate = [&](int i, double length, std::vector<PathSegment> segments) {
-    CandidateSeparatrix c;
-    c.portA = 2 * i;
-    c.portB = 2 * i + 1;
-    c.length = length;
-    c.path.segments = std::move(segments);
-    h.arcs.push_back(c);
+    addCandidate(h, i, length, std::move(segments));
   };
   candidate(0, 1.0, {{0, 0, 0.5, 1.5}});
   candidate(1, 2.0, {{0, 2, 1.5, 0.5}});  // the opposite direction: the same parity
