@@ -1,5 +1,6 @@
 #include "field/field_analysis.h"
 #include "field/field_io.h"
+#include "field/field_generation.h"
 #include "mesh/generators.h"
 #include "mesh/mesh_io.h"
 #include "tracing/edge_sampling.h"
@@ -353,6 +354,70 @@ TEST(Tracing, BarriersAreNeverCrossedTangentially) {
     }
   }
   EXPECT_GT(onBarrier, 0);
+}
+
+TEST(Tracing, SinksOutOfReachStayOutOfReachBehindMoreBarriers) {
+  // The solving cycle leaves out the sinks an earlier search of the same port ran out of graph
+  // without reaching: barriers only grow, so they stay out of reach. Checked here on the
+  // rounded box: searches that may stop at every port, behind a tenth of the candidates and
+  // then behind a fifth, find behind the fifth only sinks they found behind the tenth, and
+  // leaving out the others changes nothing.
+  SurfaceMesh m = makeRoundedBox();
+  CrossField f = generateCrossField(m);
+  auto t = trace(m, f, TracingParameters{});
+  const auto& arcs = t->h.arcs;
+  ASSERT_GE(arcs.size(), 12u);
+  BarrierSet fewer(m.numFaces()), more(m.numFaces());
+  for (int i = 0; i < int(arcs.size()); ++i) {
+    if (i % 10 == 0) fewer.add(arcs[i].path, i);  // every tenth candidate
+    if (i % 5 == 0) more.add(arcs[i].path, i);    // and as many again
+  }
+  const int numPorts = int(t->graph->ports().size());
+  std::vector<int> ports(numPorts);
+  std::iota(ports.begin(), ports.end(), 0);
+  SearchOptions options;
+  options.maxSinks = numPorts;  // every search runs out of graph
+  options.barriers = &fewer;
+  const auto behindFewer = traceFromPorts(*t->graph, ports, options);
+  options.barriers = &more;
+  const auto behindMore = traceFromPorts(*t->graph, ports, options);
+  std::vector<SearchOptions> perPort(numPorts, options);
+  int outOfReach = 0, lost = 0;
+  for (int p = 0; p < numPorts; ++p) {
+    std::vector<char> reached(numPorts, 0);
+    for (const auto& path : behindFewer[p]) reached[path.sinkPort] = 1;
+    for (const auto& path : behindMore[p]) EXPECT_TRUE(reached[path.sinkPort]) << "port " << p << " reaches " << path.sinkPort;
+    perPort[p].sinkAllowed = reached;
+    outOfReach += numPorts - 1 - int(behindFewer[p].size());
+    lost += int(behindFewer[p].size() - behindMore[p].size());
+  }
+  EXPECT_GT(outOfReach, 0) << "no sink was out of reach: the test would prove little";
+  EXPECT_GT(lost, 0) << "the extra barriers should cut some paths";
+  const auto narrowed = traceFromPorts(*t->graph, ports, perPort);
+  ASSERT_EQ(narrowed.size(), behindMore.size());
+  for (int p = 0; p < numPorts; ++p) {
+    ASSERT_EQ(narrowed[p].size(), behindMore[p].size()) << "port " << p;
+    for (std::size_t i = 0; i < narrowed[p].size(); ++i) {
+      EXPECT_EQ(narrowed[p][i].sinkPort, behindMore[p][i].sinkPort);
+      EXPECT_EQ(narrowed[p][i].length, behindMore[p][i].length);
+    }
+  }
+  // Each search takes its own options: allowed only the farthest sink it reached, it finds it.
+  std::vector<int> withPaths;
+  std::vector<SearchOptions> farthestOnly;
+  for (int p = 0; p < numPorts; ++p) {
+    if (behindMore[p].empty()) continue;
+    withPaths.push_back(p);
+    farthestOnly.push_back(options);
+    farthestOnly.back().sinkAllowed.assign(numPorts, 0);
+    farthestOnly.back().sinkAllowed[behindMore[p].back().sinkPort] = 1;
+  }
+  ASSERT_GE(withPaths.size(), 2u);
+  const auto farthest = traceFromPorts(*t->graph, withPaths, farthestOnly);
+  for (std::size_t i = 0; i < withPaths.size(); ++i) {
+    ASSERT_EQ(farthest[i].size(), 1u) << "port " << withPaths[i];
+    EXPECT_EQ(farthest[i][0].sinkPort, behindMore[withPaths[i]].back().sinkPort);
+  }
 }
 
 #include "field/field_generation.h"

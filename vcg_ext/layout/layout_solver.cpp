@@ -70,7 +70,11 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   }
   layout.selectedFromCandidates = int(first.selected.size());
 
-  // 2. The solving cycle.
+  // 2. The solving cycle. A search that ran out of graph before finding as many sinks as it
+  // was allowed proves the sinks it did not find out of reach of its port, and they stay out
+  // of reach in later rounds: the barriers only grow. Later searches leave them out, so they
+  // stop once the sinks still in reach are found, and a port with none left is not searched.
+  std::vector<std::vector<char>> outOfReach(numPorts);
   for (int iteration = 2; iteration <= params.maxIterations; ++iteration) {
     std::vector<char> used = usedPorts(graph, layout);
     std::vector<int> dangling;
@@ -80,16 +84,35 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     if (dangling.size() < 2) break;  // a separatrix needs two free ports
     auto start = Clock::now();
     BarrierSet barriers = barriersOf(graph, layout);
-    SearchOptions options;
-    options.maxSinks = graph.parameters().k;
-    options.barriers = &barriers;
-    options.sinkAllowed = free;
-    auto searches = traceFromPorts(graph, dangling, options);
-    // A port's own sink is never a target.
-    for (std::size_t i = 0; i < searches.size(); ++i)
-      searches[i].erase(std::remove_if(searches[i].begin(), searches[i].end(),
-                                       [&](const TracedPath& p) { return p.sinkPort == dangling[i]; }),
-                        searches[i].end());
+    std::vector<int> sources;
+    std::vector<SearchOptions> options;
+    std::vector<int> wanted;
+    for (int p : dangling) {
+      SearchOptions o;
+      o.maxSinks = graph.parameters().k;
+      o.barriers = &barriers;
+      o.sinkAllowed.assign(free.begin(), free.end());
+      o.sinkAllowed[p] = 0;  // a port's own sink is never a target
+      if (!outOfReach[p].empty())
+        for (int q = 0; q < numPorts; ++q)
+          if (outOfReach[p][q]) o.sinkAllowed[q] = 0;
+      const int allowed = int(std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1));
+      if (allowed == 0) continue;
+      sources.push_back(p);
+      wanted.push_back(std::min(o.maxSinks, allowed));
+      options.push_back(std::move(o));
+    }
+    if (sources.empty()) break;
+    auto searches = traceFromPorts(graph, sources, options);
+    for (std::size_t i = 0; i < searches.size(); ++i) {
+      if (int(searches[i].size()) >= wanted[i]) continue;
+      // Out of reach: what was before, and every sink allowed this time but not found.
+      std::vector<char>& far = outOfReach[sources[i]];
+      if (far.empty()) far.assign(numPorts, 0);
+      for (int q = 0; q < numPorts; ++q)
+        if (options[i].sinkAllowed[q]) far[q] = 1;
+      for (const TracedPath& path : searches[i]) far[path.sinkPort] = 0;
+    }
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;

@@ -3,6 +3,7 @@
 #include "mesh/worker_threads.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -424,8 +425,12 @@ std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, cons
   return search.run(port, options);
 }
 
-std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
-                                                    const SearchOptions& options, const ProgressCallback& progress) {
+namespace {
+
+/// Search i from ports[i] with optionsOf(i), shared out among the threads port by port.
+template <class OptionsOf>
+std::vector<std::vector<TracedPath>> searchInParallel(const GeodesicGraph& graph, const std::vector<int>& ports,
+                                                      const OptionsOf& optionsOf, const ProgressCallback& progress) {
   std::vector<std::vector<TracedPath>> results(ports.size());
   const int threads = workerThreadCount(graph.parameters().threads, int(ports.size()));
   std::atomic<std::size_t> next{0};
@@ -436,7 +441,7 @@ std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, 
     for (;;) {
       std::size_t i = next.fetch_add(1);
       if (i >= ports.size()) break;
-      results[i] = search.run(ports[i], options);
+      results[i] = search.run(ports[i], optionsOf(i));
       int finished = ++done;
       if (reports && progress) progress(finished, int(ports.size()));
     }
@@ -444,6 +449,19 @@ std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, 
   runOnWorkerThreads(threads, work);
   if (progress) progress(int(ports.size()), int(ports.size()));
   return results;
+}
+
+}  // namespace
+
+std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
+                                                    const SearchOptions& options, const ProgressCallback& progress) {
+  return searchInParallel(graph, ports, [&](std::size_t) -> const SearchOptions& { return options; }, progress);
+}
+
+std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
+                                                    const std::vector<SearchOptions>& options) {
+  if (options.size() != ports.size()) throw std::invalid_argument("traceFromPorts: one set of options per port");
+  return searchInParallel(graph, ports, [&](std::size_t i) -> const SearchOptions& { return options[i]; }, nullptr);
 }
 
 }  // namespace fcql

@@ -59,5 +59,8 @@ std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, cons
 std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
                                                     const SearchOptions& options,
                                                     const ProgressCallback& progress = nullptr);
+/// The same with options of its own for each search: `options[i]` for ports[i].
+std::vector<std::vector<TracedPath>> traceFromPorts(const GeodesicGraph& graph, const std::vector<int>& ports,
+                                                    const std::vector<SearchOptions>& options);
 
 }  // namespace fcql
