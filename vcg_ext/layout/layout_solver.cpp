@@ -31,7 +31,7 @@ bool pathsMeet(const TracedPath& p, const TracedPath& q) {
 void noteSelection(Layout& layout, const SelectionResult& r) {
   layout.ilpSeconds += r.seconds;
   layout.iterations += 1;
-  if (r.status == IntegerProgram::Status::Stalled) ++layout.ilpStalled;
+  layout.ilpStalled += r.stalledParts;
   if (r.status == IntegerProgram::Status::TimeLimit) layout.ilpTimeLimitHit = true;
   if (r.status == IntegerProgram::Status::TimeLimit || r.status == IntegerProgram::Status::Stalled) {
     layout.messages.push_back("0-1 program " + std::to_string(layout.iterations) + ": " + r.message);

@@ -51,7 +51,7 @@ struct Layout {
   std::vector<int> unresolvedPorts;  ///< dangling ports no propagation could resolve
   int deadEndsRemoved = 0;        ///< separatrices dropped by removeDeadEnds
   bool ilpTimeLimitHit = false;
-  int ilpStalled = 0;             ///< programs stopped because the best solution stopped improving
+  int ilpStalled = 0;             ///< parts of 0-1 programs stopped at the stall limit
   std::vector<std::string> messages; ///< solver notes worth logging
   double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0;
 };

@@ -274,18 +274,23 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // A part lp_solve settled is never worse than the greedy selection, so the greedy one is
-  // used only where lp_solve stopped early.
+  out.stalledParts = stalled;
+  // The greedy selection can beat lp_solve's where lp_solve stopped early, or by less than the
+  // 0.1% gap on a part it settled; the status says whether lp_solve stopped early.
   out.status = timedOut > 0 ? IntegerProgram::Status::TimeLimit
                : stalled > 0 ? IntegerProgram::Status::Stalled
                              : IntegerProgram::Status::Optimal;
   if (out.status != IntegerProgram::Status::Optimal) {
     auto num = [](int k) { return std::to_string(k); };
-    char stall[32];
-    std::snprintf(stall, sizeof stall, "%g", stallSeconds);
+    std::string stall;
+    if (stalled > 0) {
+      char s[32];
+      std::snprintf(s, sizeof s, "%g", stallSeconds);
+      stall = ", stopped after " + std::string(s) + " s without a better solution: " + num(stalled);
+    }
     out.message = "lp_solve had " + num(programs) + " of " + num(parts) +
-                  " independent parts to solve; time limit reached: " + num(timedOut) + ", stopped after " + stall +
-                  " s without a better solution: " + num(stalled) + "; " +
+                  " independent parts to solve; time limit reached (or no solution found): " + num(timedOut) + stall +
+                  "; " +
                   (usedGreedy ? "the greedy selection was better on " + num(usedGreedy)
                               : std::string("the best solutions found are kept"));
   }

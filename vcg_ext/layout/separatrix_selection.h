@@ -19,6 +19,7 @@ struct SelectionResult {
   int variables = 0;   ///< one per candidate both of whose ports are free
   int dominated = 0;   ///< variables left out because another one dominates them
   int constraints = 0; ///< rows of the program lp_solve gets (after leaving those out)
+  int stalledParts = 0; ///< parts whose branch and bound stopped at the stall limit
 };
 
 /// `portFree[p]` = 1 if port p may receive a separatrix (empty: all ports). Arcs touching a
