@@ -23,6 +23,47 @@ double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, 
   return std::min(a, kPi / 2 - a);
 }
 
+/// Angle (−π..π) of tangent vector d, projected onto face f, from the field's first direction
+/// u[f]; false if d has no component in the face's plane.
+bool angleFromField(const SurfaceMesh& surface, const CrossField& field, int f, const Vec3& d, double& angle) {
+  const Vec3& n = surface.faceNormal(f);
+  const Vec3 t = d - n * n.dot(d);
+  if (!(t.norm() > 0)) return false;
+  const Vec3& u = field.u[f];
+  angle = std::atan2(t.dot(n.cross(u)), t.dot(u));
+  return true;
+}
+
+/// Percentage of the faces of `surface` misaligned as the paper's Table 2 counts them (see
+/// the header).
+double misalignedFacesPercent(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
+                              double thresholdRad) {
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(2 * std::size_t(quads.numQuads()));
+  for (const auto& q : quads.quads) {
+    triangles.push_back({q[0], q[1], q[2]});
+    triangles.push_back({q[0], q[2], q[3]});
+  }
+  const ClosestPointIndex quadIndex(quads.positions, std::move(triangles));
+  const auto& P = quads.positions;
+  int misaligned = 0, measured = 0;
+  for (int f = 0; f < surface.numFaces(); ++f) {
+    const ClosestPoint cp = quadIndex.closest(surface.faceCentroid(f));
+    if (cp.triangle < 0) continue;
+    const auto& q = quads.quads[cp.triangle / 2];
+    const Vec3 directions[2] = {(P[q[1]] + P[q[2]]) - (P[q[0]] + P[q[3]]), (P[q[2]] + P[q[3]]) - (P[q[0]] + P[q[1]])};
+    double s = 0, c = 0;
+    for (const Vec3& d : directions) {
+      double a;
+      if (angleFromField(surface, field, f, d, a)) s += std::sin(4 * a), c += std::cos(4 * a);
+    }
+    ++measured;
+    const double deviation = (s == 0 && c == 0) ? kPi / 4 : std::abs(std::atan2(s, c)) / 4;
+    if (deviation > thresholdRad) ++misaligned;
+  }
+  return measured > 0 ? 100.0 * misaligned / measured : 0;
+}
+
 /// Calls visit(point, distance) for every point the Hausdorff distance measures (see the
 /// header): quad centres, corners and edge midpoints against the surface, each once, then the
 /// surface points against the quads.
@@ -130,6 +171,7 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
   }
   r.misalignedPercent = 100.0 * misaligned / nq;
   r.meanMisalignmentDeg = sumAngle / nq * 180 / kPi;
+  r.misalignedFacesPercent = misalignedFacesPercent(quads, surface, field, thresholdRad);
   r.minScaledJacobian = minJ;
   r.meanScaledJacobian = sumJ / nq;
 

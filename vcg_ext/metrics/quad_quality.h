@@ -4,7 +4,14 @@
 // - Misalignment: per quad, its two directions are the vectors joining the midpoints of
 //   opposite edges; each is projected onto the input face nearest to the quad's centre and its
 //   angle to the nearest direction of that face's cross is taken (0..45°). A quad is misaligned
-//   when the larger of its two angles exceeds the threshold (π/16 as in the paper).
+//   when the larger of its two angles exceeds the threshold (π/16 as in the paper). A sheared
+//   quad counts, even with one direction on the field.
+// - Misaligned faces, as the paper's Table 2 counts them ("the percentage of faces whose
+//   misalignment is over π/16", the deviation between the field and the direction field of
+//   the parametrization, up to quarter turns): per face of the input, the cross the quads
+//   follow there, fitted to the two directions of the quad over the face's centroid (their
+//   angles to the field averaged as four-fold angles, so that a quad sheared by σ fits a cross
+//   σ/2 off each), against the face's own cross. Shear counts half as much as above.
 // - Scaled Jacobian of a quad: the minimum over its corners of (e1 × e2)·n / (|e1| |e2|), with
 //   e1, e2 the edges leaving the corner and n the unit normal of the quad (cross product of its
 //   diagonals): 1 for a rectangle, ≤ 0 for a folded or inverted corner.
@@ -42,6 +49,7 @@ double scaledJacobian(const QuadMesh& mesh, int q);
 struct QuadQuality {
   double misalignedPercent = 0;     ///< % of quads misaligned by more than the threshold
   double meanMisalignmentDeg = 0;   ///< mean over quads of the larger angle, degrees
+  double misalignedFacesPercent = 0; ///< % of input faces misaligned as the paper counts them
   double minScaledJacobian = 0;
   double meanScaledJacobian = 0;
   int invertedQuads = 0;            ///< scaled Jacobian ≤ 0

@@ -1,0 +1,81 @@
+#include "metrics/quad_quality.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace fcql;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// The unit square in the plane z = 0 as 2·n² triangles, with the field along x.
+struct FlatSquare {
+  SurfaceMesh mesh;
+  CrossField field;
+};
+
+FlatSquare flatSquare(int n) {
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> faces;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) positions.push_back(Vec3(double(i) / n, double(j) / n, 0));
+  auto at = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  FlatSquare s{SurfaceMesh(positions, faces), CrossField()};
+  s.field = CrossField::fromVectors(s.mesh, std::vector<Vec3>(faces.size(), Vec3(1, 0, 0)));
+  return s;
+}
+
+/// An n × n grid of quads covering the unit square, its lines along (1, 0) turned by `turn`
+/// and along (0, 1) turned by `turn` + `shear` (radians), mapped into the square by an affine
+/// map that fixes its centre (the grid overhangs or falls short of the square at the edges,
+/// which the measures below do not mind: every face's centroid still has a quad nearest).
+QuadMesh grid(int n, double turn, double shear) {
+  const Vec3 a(std::cos(turn), std::sin(turn), 0), b(-std::sin(turn + shear), std::cos(turn + shear), 0);
+  QuadMesh q;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) q.positions.push_back(Vec3(0.5, 0.5, 0) + (double(i) / n - 0.5) * a + (double(j) / n - 0.5) * b);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      q.quads.push_back({j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i});
+      q.quadPatch.push_back(0);
+    }
+  return q;
+}
+
+QuadQuality quality(const QuadMesh& q, const FlatSquare& s) {
+  const ClosestPointIndex index(s.mesh);
+  return measureQuadQuality(q, s.mesh, s.field, index);
+}
+
+}  // namespace
+
+TEST(QuadQuality, MisalignmentOfQuadsAndOfFacesAsThePaperCountsThem) {
+  const FlatSquare s = flatSquare(12);
+  // On the field: nothing misaligned either way.
+  QuadQuality r = quality(grid(10, 0, 0), s);
+  EXPECT_EQ(r.misalignedPercent, 0);
+  EXPECT_EQ(r.misalignedFacesPercent, 0);
+  // Sheared by 20°, one family of lines on the field: every quad has a direction 20° off,
+  // but the cross that fits both is 10° off, under π/16 = 11.25°.
+  r = quality(grid(10, 0, 20 * kPi / 180), s);
+  EXPECT_EQ(r.misalignedPercent, 100);
+  EXPECT_EQ(r.misalignedFacesPercent, 0);
+  // Sheared by 30°: the fitted cross is 15° off.
+  r = quality(grid(10, 0, 30 * kPi / 180), s);
+  EXPECT_EQ(r.misalignedFacesPercent, 100);
+  // Square quads turned by 15°: both ways.
+  r = quality(grid(10, 15 * kPi / 180, 0), s);
+  EXPECT_EQ(r.misalignedPercent, 100);
+  EXPECT_EQ(r.misalignedFacesPercent, 100);
+  // Turned by a quarter turn plus 5°: the cross ignores quarter turns, and 5° is under π/16.
+  r = quality(grid(10, (90 + 5) * kPi / 180, 0), s);
+  EXPECT_EQ(r.misalignedPercent, 0);
+  EXPECT_EQ(r.misalignedFacesPercent, 0);
+}
