@@ -176,12 +176,12 @@ done
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
   issue's target, 10× below the paper's time, is met on rockerarm only (16–19.5× on the
-  layout, 12–15× on the whole run in four bench runs on 2026-12-02; the comparison is unfair
-  the other way: our rockerarm has 20K faces, the paper's 70K); the bunny is 7.5–9× below on
-  the layout and 6–7× on the whole run, fertility 6–7.7× and 4.4–5.7× (7.6–7.7× since the
-  conflict cliques per chord), the dragon 5.8× and 3.2× (4.7× and 2.8× with a 5 s stall limit;
-  it was 1.0× and 0.8× before its first 0-1 program stopped once its best solution stalled,
-  below). Times vary by 10–40% from run to run on this machine (a shared virtual
+  layout, 12–15× on the whole run in six bench runs on 2026-12-02; the comparison is unfair
+  the other way: our rockerarm has 20K faces, the paper's 70K); the bunny is 6.6–9.1× below on
+  the layout and 5–7× on the whole run, fertility 5.9–7.7× and 4.3–5.7× (7.1–7.7× in the runs
+  since the conflict cliques per chord, but for one at 5.9× when the whole machine ran slow),
+  the dragon 4.7–5.8× and 2.7–3.2× (it was 1.0× and 0.8× before its first 0-1 program stopped
+  once its best solution stalled, below). Times vary by 10–40% from run to run on this machine (a shared virtual
   machine: the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the
   same tracing code).
 - **Quality**: every mesh is within 1% of the diagonal. Where the quads stray farther, the
@@ -192,8 +192,12 @@ done
   with the layout it got at the 60 s limit). Misalignment is high on the open
   surfaces lilium and aqua_center: their long strips of patches along the borders are mapped
   with their boundaries fixed by arc length, which shears the grid when the two long sides of a
-  strip are not parallel; elsewhere 17–39% of the quads are more than π/16 off the field,
-  against the paper's 2–9%. A few quads stay nearly flat or just folded (scaled Jacobian just
+  strip are not parallel; elsewhere 17–43% of the quads are more than π/16 off the field in
+  their worse direction. Counted as the paper's Table 2 counts (*mis. faces %*: input faces
+  where the cross fitted to the quad's two directions is more than π/16 off the field, so that
+  shear counts half), 4–22%: fertility 5.7% against the paper's 5.9%, rockerarm 9.7% against
+  2.6% (the paper's rockerarm has 70K faces and its own field), the dragon 22% (795
+  singularities), the open strips of aqua_center and lilium 32%. A few quads stay nearly flat or just folded (scaled Jacobian just
   below 0 on some meshes; on rockerarm two quads with a valence-3 corner lie across a 99°
   crease, which the scaled Jacobian, taken against the normal of the quad's diagonals, counts
   as folded). *invalid* counts patches with other than 4 corners (the quad stage
