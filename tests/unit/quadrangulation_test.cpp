@@ -468,6 +468,32 @@ TEST(Quadrangulation, ZeroChainOfTheBunnyIsResolved) {
   checkQuadMesh(*q, r, "bunny");
 }
 
+TEST(Quadrangulation, ZeroChainsLeftWhenTheRoundsRunOutStopTheStageClearly) {
+  // The kitten's layout has zero chains that one round of splits resolves. Without any round,
+  // the side lengths are solved once more without the bound on stretching (which alone can
+  // contradict the t-junction equalities), and when patches still disagree the stage stops
+  // with an error saying so, instead of sampling patches whose opposite sides differ.
+  FCQL_REQUIRE_SHARED(kitten, "kitten.obj");
+  auto q = layoutOf(loadMesh(kitten));
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
+  options.maxSplitRounds = 0;
+  try {
+    quadrangulate(q->patches, options);
+    ADD_FAILURE() << "zero chains left after 0 rounds should stop the stage";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("still have unequal opposite sides after 0 rounds"), std::string::npos) << message;
+    EXPECT_NE(message.find("without the bound on stretching"), std::string::npos) << message;
+  }
+  options.maxSplitRounds = 1;
+  const QuadrangulationResult r = quadrangulate(q->patches, options);
+  EXPECT_GT(r.splitPatches, 0);
+  EXPECT_EQ(r.splitRounds, 1);
+  EXPECT_FALSE(r.stretchBoundDropped);
+  checkQuadMesh(*q, r, "kitten, one round of splits");
+}
+
 TEST(Quadrangulation, PatchWithFiveCornersIsCutIntoQuads) {
   // Give one patch of the rounded box an extra corner in the middle of a side (as a layout with
   // a wrongly placed corner would): it is quadrangulated as a pentagon, with a valence-5 centre.

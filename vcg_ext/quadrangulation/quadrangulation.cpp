@@ -35,7 +35,9 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     if (r.splitRounds >= options.maxSplitRounds)
       throw std::runtime_error(std::to_string(r.lengths.inconsistentPatches.size()) +
                                " patches still have unequal opposite sides after " +
-                               std::to_string(options.maxSplitRounds) + " rounds of zero-chain splits");
+                               std::to_string(options.maxSplitRounds) +
+                               " rounds of zero-chain splits, even with the side lengths solved once more "
+                               "without the bound on stretching");
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
