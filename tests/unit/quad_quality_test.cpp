@@ -79,3 +79,25 @@ TEST(QuadQuality, MisalignmentOfQuadsAndOfFacesAsThePaperCountsThem) {
   EXPECT_EQ(r.misalignedPercent, 0);
   EXPECT_EQ(r.misalignedFacesPercent, 0);
 }
+
+TEST(QuadQuality, EachFaceIsMeasuredAgainstTheQuadOverIt) {
+  // Two grids side by side: on the left half of the square 8 × 8 quads on the field, on the
+  // right half 4 × 4 quads turned by 20°. About half of the faces lie under each (a few near the
+  // middle under the turned grid's overhanging corners), and only those under the turned one
+  // are misaligned. (The grids differ in size so that a face measured against the wrong quad
+  // would show.)
+  const FlatSquare s = flatSquare(12);
+  QuadMesh left = grid(8, 0, 0), right = grid(4, 20 * kPi / 180, 0);
+  QuadMesh both;
+  for (const QuadMesh* g : {&left, &right}) {
+    const int offset = both.numVertices();
+    const Vec3 shift = g == &left ? Vec3(-0.25, 0, 0) : Vec3(0.25, 0, 0);
+    for (const Vec3& p : g->positions) both.positions.push_back(Vec3(0.5, 0.5, 0) + 0.5 * (p - Vec3(0.5, 0.5, 0)) + shift);
+    for (const auto& q : g->quads) both.quads.push_back({q[0] + offset, q[1] + offset, q[2] + offset, q[3] + offset});
+    both.quadPatch.insert(both.quadPatch.end(), g->quadPatch.begin(), g->quadPatch.end());
+  }
+  const QuadQuality r = quality(both, s);
+  EXPECT_EQ(r.misalignedPercent, 20);  // per quad: the right grid's 16 of 80
+  EXPECT_GE(r.misalignedFacesPercent, 45);
+  EXPECT_LE(r.misalignedFacesPercent, 60);
+}
