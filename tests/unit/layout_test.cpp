@@ -303,3 +303,31 @@ TEST(Layout, CandidatesAlongOneChordConflictEvenWhenNothingElseCrossesIt) {
   EXPECT_EQ(r.constraints, 0);
   EXPECT_EQ(r.selected, (std::vector<int>{0, 2})) << "the shorter of the two overlapping ones, and the free one";
 }
+
+TEST(Layout, SinksShownOutOfReachStayOutOfLaterSearches) {
+  SinksOutOfReach memory(5);
+  const std::vector<char> free = {1, 1, 1, 1, 0};  // port 4 has its separatrix
+  EXPECT_EQ(memory.allowedFrom(0, free), (std::vector<char>{0, 1, 1, 1, 0})) << "never itself nor a used port";
+  auto sinkAt = [](int port) {
+    TracedPath path;
+    path.end = TracedPath::Sink;
+    path.sinkPort = port;
+    return path;
+  };
+  // A search from 0 that wanted 3 sinks and found only port 2 ran out of graph: 1 and 3 are
+  // out of its reach.
+  memory.note(0, memory.allowedFrom(0, free), 3, {sinkAt(2)});
+  EXPECT_TRUE(memory.outOfReach(0, 1));
+  EXPECT_TRUE(memory.outOfReach(0, 3));
+  EXPECT_FALSE(memory.outOfReach(0, 2));
+  EXPECT_EQ(memory.allowedFrom(0, free), (std::vector<char>{0, 0, 1, 0, 0}));
+  // A search that found all it wanted stopped early: it shows nothing out of reach.
+  memory.note(1, memory.allowedFrom(1, free), 1, {sinkAt(0)});
+  for (int q = 0; q < 5; ++q) EXPECT_FALSE(memory.outOfReach(1, q));
+  // A later round, port 1 taken meanwhile: 0's search finds nothing now; what was out of reach
+  // stays so, and 2 joins it.
+  const std::vector<char> fewer = {1, 0, 1, 1, 0};
+  memory.note(0, memory.allowedFrom(0, fewer), 1, {});
+  for (int q : {1, 2, 3}) EXPECT_TRUE(memory.outOfReach(0, q)) << q;
+  EXPECT_EQ(memory.allowedFrom(0, free), (std::vector<char>(5, 0)));
+}

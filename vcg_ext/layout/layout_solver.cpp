@@ -74,7 +74,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   // was allowed proves the sinks it did not find out of reach of its port, and they stay out
   // of reach in later rounds: the barriers only grow. Later searches leave them out, so they
   // stop once the sinks still in reach are found, and a port with none left is not searched.
-  std::vector<std::vector<char>> outOfReach(numPorts);
+  SinksOutOfReach outOfReach(numPorts);
   for (int iteration = 2; iteration <= params.maxIterations; ++iteration) {
     std::vector<char> used = usedPorts(graph, layout);
     std::vector<int> dangling;
@@ -91,11 +91,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
       SearchOptions o;
       o.maxSinks = graph.parameters().k;
       o.barriers = &barriers;
-      o.sinkAllowed.assign(free.begin(), free.end());
-      o.sinkAllowed[p] = 0;  // a port's own sink is never a target
-      if (!outOfReach[p].empty())
-        for (int q = 0; q < numPorts; ++q)
-          if (outOfReach[p][q]) o.sinkAllowed[q] = 0;
+      o.sinkAllowed = outOfReach.allowedFrom(p, free);
       const int allowed = int(std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1));
       if (allowed == 0) continue;
       sources.push_back(p);
@@ -104,15 +100,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     }
     if (sources.empty()) break;
     auto searches = traceFromPorts(graph, sources, options);
-    for (std::size_t i = 0; i < searches.size(); ++i) {
-      if (int(searches[i].size()) >= wanted[i]) continue;
-      // Out of reach: what was before, and every sink allowed this time but not found.
-      std::vector<char>& far = outOfReach[sources[i]];
-      if (far.empty()) far.assign(numPorts, 0);
-      for (int q = 0; q < numPorts; ++q)
-        if (options[i].sinkAllowed[q]) far[q] = 1;
-      for (const TracedPath& path : searches[i]) far[path.sinkPort] = 0;
-    }
+    for (std::size_t i = 0; i < searches.size(); ++i) outOfReach.note(sources[i], options[i].sinkAllowed, wanted[i], searches[i]);
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
@@ -199,6 +187,25 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
                               "which would leave a slit inside a patch");
   layout.propagationSeconds = since(start);
   return layout;
+}
+
+std::vector<char> SinksOutOfReach::allowedFrom(int port, const std::vector<char>& free) const {
+  std::vector<char> allowed(free.begin(), free.end());
+  allowed.at(port) = 0;  // a port's own sink is never a target
+  if (!far_.at(port).empty())
+    for (std::size_t q = 0; q < allowed.size(); ++q)
+      if (far_[port][q]) allowed[q] = 0;
+  return allowed;
+}
+
+void SinksOutOfReach::note(int port, const std::vector<char>& allowed, int wanted, const std::vector<TracedPath>& found) {
+  if (int(found.size()) >= wanted) return;  // stopped early: nothing shown out of reach
+  std::vector<char>& far = far_.at(port);
+  if (far.empty()) far.assign(allowed.size(), 0);
+  for (std::size_t q = 0; q < allowed.size(); ++q)
+    if (allowed[q]) far[q] = 1;
+  for (const TracedPath& path : found)
+    if (path.end == TracedPath::Sink) far.at(path.sinkPort) = 0;
 }
 
 int removeDeadEnds(const GeodesicGraph& graph, Layout& layout) {

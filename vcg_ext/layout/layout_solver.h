@@ -70,4 +70,23 @@ int removeDeadEnds(const GeodesicGraph& graph, Layout& layout);
 /// Ports that have a separatrix in `layout` (per port, 1 = used).
 std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout);
 
+/// What the solving cycle's searches have shown out of reach. A search that found fewer sinks
+/// than it wanted ran out of graph, so every sink it was allowed and did not find is out of
+/// reach of its port; with barriers that only grow from round to round, it stays so. Used by
+/// solveLayout (step 2) to leave those sinks out of the port's later searches.
+class SinksOutOfReach {
+public:
+  explicit SinksOutOfReach(int numPorts) : far_(numPorts) {}
+  /// The sinks a search from `port` may stop at: the `free` ports but itself and those out of
+  /// its reach.
+  std::vector<char> allowedFrom(int port, const std::vector<char>& free) const;
+  /// Takes note of a search from `port` that was allowed `allowed`, wanted `wanted` sinks and
+  /// found the paths `found`.
+  void note(int port, const std::vector<char>& allowed, int wanted, const std::vector<TracedPath>& found);
+  bool outOfReach(int port, int sink) const { return !far_[port].empty() && far_[port][sink]; }
+
+private:
+  std::vector<std::vector<char>> far_;  ///< per port, per sink (empty: none known)
+};
+
 }  // namespace fcql
