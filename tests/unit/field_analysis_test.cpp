@@ -116,9 +116,7 @@ TEST(FieldAnalysis, FormatsQuarterIndices) {
 }
 
 TEST(FieldAnalysis, EightWithItsFieldHas24Singularities) {
-  FCQL_REQUIRE_SHARED(obj, "eight.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField field = loadField(m, fcql::test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, field, "eight");
   FieldAnalysis a = analyzeField(m, field);
   EXPECT_EQ(a.numInteriorSingularities(), 24);
   auto histogram = a.interiorHistogram();

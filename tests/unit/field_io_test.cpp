@@ -84,8 +84,6 @@ TEST(FieldIo, WriteReadRoundTrip) {
 }
 
 TEST(FieldIo, ReadsSharedEightField) {
-  FCQL_REQUIRE_SHARED(obj, "eight.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, fcql::test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
   EXPECT_EQ(f.numFaces(), 11092);
 }

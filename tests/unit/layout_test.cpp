@@ -139,9 +139,7 @@ TEST(Layout, CubeGivesSixQuadPatches) {
 }
 
 TEST(Layout, EightPatchesAreQuadDisks) {
-  FCQL_REQUIRE_SHARED(obj, "eight.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
   auto s = solve(m, f);
   checkLayoutInvariants(*s);
   EXPECT_GT(s->patches.numPatches(), 4);
@@ -158,9 +156,7 @@ TEST(Layout, BorderSeparatricesDoNotCutSliversOffTheLilium) {
   // With alpha 5 and k 3 a border singularity's separatrix once ran along the lilium's border
   // and met it at 13°: a 6-triangle patch with 3 corners between them, and a 5-corner patch
   // beside it. Paths now end on the border only across it.
-  FCQL_REQUIRE_SHARED(obj, "lilium.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("lilium.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "lilium");
   TracingParameters tp;
   tp.alpha = 5;
   tp.k = 3;

@@ -449,9 +449,7 @@ TEST(Quadrangulation, NeighboursSplitInOneRoundShareTheMiddleOfTheirSide) {
 }
 
 TEST(Quadrangulation, SharedMeshesGiveCloseManifoldQuadMeshes) {
-  FCQL_REQUIRE_SHARED(eight, "eight.obj");
-  SurfaceMesh mesh = loadMesh(eight);
-  CrossField field = loadField(mesh, test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(mesh, field, "eight");
   auto q = layoutOf(mesh, &field);
   checkQuadMesh(*q, quadrangulateWithDefaults(*q, 0.02), "eight");
   FCQL_REQUIRE_SHARED(kitten, "kitten.obj");

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "field/cross_field.h"
+#include "field/field_io.h"
+#include "mesh/mesh_io.h"
 #include "mesh/surface_mesh.h"
 
 #include <cmath>
@@ -69,3 +71,10 @@ inline CrossField axisField(const SurfaceMesh& m) {
 #define FCQL_REQUIRE_SHARED(var, name)                                                   \
   std::string var = fcql::test::sharedMesh(name);                                        \
   if (var.empty()) GTEST_SKIP() << "../shared/data/meshes/" << name << " is absent: skipped"
+
+// The shared mesh NAME.obj as `mesh` and the field it ships, NAME.ffield, as `field`; the
+// test is skipped if ../shared is absent.
+#define FCQL_REQUIRE_SHARED_WITH_FIELD(mesh, field, name)                                \
+  FCQL_REQUIRE_SHARED(mesh##File, std::string(name) + ".obj");                          \
+  fcql::SurfaceMesh mesh = fcql::loadMesh(mesh##File);                                   \
+  fcql::CrossField field = fcql::loadField(mesh, fcql::test::sharedMesh(std::string(name) + ".ffield"))

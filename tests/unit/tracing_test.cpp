@@ -192,9 +192,7 @@ TEST(Tracing, ArcsIntoDeadEndsAreMarkedAndNoOthers) {
   // Searches for sinks skip the marked arcs without looking at their targets: an arc is
   // marked exactly when its target is a border terminal or an edge node without arcs out.
   // The lilium (open, with its own field) has both kinds.
-  FCQL_REQUIRE_SHARED(obj, "lilium.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("lilium.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "lilium");
   FieldAnalysis a = analyzeField(m, f);
   GeodesicGraph g(m, f, a, TracingParameters());
   long border = 0, stuck = 0;
@@ -216,9 +214,7 @@ TEST(Tracing, PathsEndOnTheBorderOnlyAcrossIt) {
   // edge's normal: one running along the border would meet it at a grazing angle and cut
   // off a sliver patch (on the lilium at alpha 5, k 3 a 6-triangle 3-corner patch, beside a
   // 5-corner one). Both kinds of direction must occur, or the check proves nothing.
-  FCQL_REQUIRE_SHARED(obj, "lilium.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("lilium.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "lilium");
   FieldAnalysis a = analyzeField(m, f);
   GeodesicGraph g(m, f, a, TracingParameters());
   const EdgeSampling& es = g.sampling();
@@ -250,9 +246,7 @@ TEST(Tracing, PathsEndOnTheBorderOnlyAcrossIt) {
 }
 
 TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
-  FCQL_REQUIRE_SHARED(obj, "eight.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
   TracingParameters one, two;
   one.threads = 1;
   two.threads = 2;
@@ -292,9 +286,7 @@ double meanDrift(const Traced& t) {
 }  // namespace
 
 TEST(Tracing, LargerAlphaKeepsPathsCloserToTheField) {
-  FCQL_REQUIRE_SHARED(obj, "eight.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
   TracingParameters loose, strict;
   loose.alpha = 0;
   strict.alpha = 30;
@@ -306,9 +298,7 @@ TEST(Tracing, LargerAlphaKeepsPathsCloserToTheField) {
 }
 
 TEST(Tracing, BarriersAreNeverCrossedTangentially) {
-  FCQL_REQUIRE_SHARED(obj, "eight.obj");
-  SurfaceMesh m = loadMesh(obj);
-  CrossField f = loadField(m, test::sharedMesh("eight.ffield"));
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
   TracingParameters params;
   params.k = 4;
   auto t = trace(m, f, params);
