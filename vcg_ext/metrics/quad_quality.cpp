@@ -10,19 +10,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Angle (0..π/4) between tangent vector d, projected onto face f, and the nearest direction
-/// of the cross of f.
-double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, const Vec3& d) {
-  const Vec3& n = surface.faceNormal(f);
-  const Vec3 t = d - n * n.dot(d);
-  if (!(t.norm() > 0)) return kPi / 4;
-  const Vec3& u = field.u[f];
-  const Vec3 v = n.cross(u);
-  double a = std::atan2(t.dot(v), t.dot(u));     // -π..π
-  a = std::fmod(a + 4 * kPi, kPi / 2);           // 0..π/2
-  return std::min(a, kPi / 2 - a);
-}
-
 /// Angle (−π..π) of tangent vector d, projected onto face f, from the field's first direction
 /// u[f]; false if d has no component in the face's plane.
 bool angleFromField(const SurfaceMesh& surface, const CrossField& field, int f, const Vec3& d, double& angle) {
@@ -32,6 +19,15 @@ bool angleFromField(const SurfaceMesh& surface, const CrossField& field, int f, 
   const Vec3& u = field.u[f];
   angle = std::atan2(t.dot(n.cross(u)), t.dot(u));
   return true;
+}
+
+/// Angle (0..π/4) between tangent vector d, projected onto face f, and the nearest direction
+/// of the cross of f (π/4 if d has no component in the face's plane).
+double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, const Vec3& d) {
+  double a;
+  if (!angleFromField(surface, field, f, d, a)) return kPi / 4;
+  a = std::fmod(a + 4 * kPi, kPi / 2);  // 0..π/2
+  return std::min(a, kPi / 2 - a);
 }
 
 /// Percentage of the faces of `surface` misaligned as the paper's Table 2 counts them (see
