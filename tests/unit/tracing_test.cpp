@@ -10,7 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numeric>
+#include <queue>
 #include <set>
 
 using namespace fcql;
@@ -190,23 +193,102 @@ TEST(Tracing, SmallerPhiGivesMoreNodes) {
 
 TEST(Tracing, ArcsIntoDeadEndsAreMarkedAndNoOthers) {
   // Searches for sinks skip the marked arcs without looking at their targets: an arc is
-  // marked exactly when its target is a border terminal or an edge node without arcs out.
-  // The lilium (open, with its own field) has both kinds.
+  // marked exactly when no sink can be reached from its target, which holds for every border
+  // terminal and edge node without arcs out. The lilium (open, with its own field) has both
+  // kinds, and nodes whose every way on ends so.
   FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "lilium");
   FieldAnalysis a = analyzeField(m, f);
   GeodesicGraph g(m, f, a, TracingParameters());
-  long border = 0, stuck = 0;
+  long border = 0, stuck = 0, leadingNowhere = 0;
   for (int n = 0; n < g.numNodeSlots(); ++n)
     for (const GeodesicGraph::Arc* arc = g.arcsBegin(n); arc != g.arcsEnd(n); ++arc) {
       const int v = GeodesicGraph::targetNode(*arc);
       const bool terminal = g.isBorderTerminal(v);
       const bool noWayOn = !g.isPortNode(v) && g.arcsBegin(v) == g.arcsEnd(v);
-      ASSERT_EQ(GeodesicGraph::isDeadEnd(*arc), terminal || noWayOn) << "arc " << n << " -> " << v;
+      ASSERT_EQ(GeodesicGraph::isDeadEnd(*arc), std::isinf(g.sinkDistance(v))) << "arc " << n << " -> " << v;
+      if (terminal || noWayOn) ASSERT_TRUE(GeodesicGraph::isDeadEnd(*arc)) << "arc " << n << " -> " << v;
       border += terminal;
       stuck += noWayOn && !terminal;
+      leadingNowhere += GeodesicGraph::isDeadEnd(*arc) && !terminal && !noWayOn;
     }
   EXPECT_GT(border, 0);
   EXPECT_GT(stuck, 0);
+  EXPECT_GT(leadingNowhere, 0);
+}
+
+TEST(Tracing, SinkDistancesAreShortestPathLengthsAndReduceTheWeights) {
+  // h(n), the length of the shortest path from n to a sink, satisfies Bellman's equation
+  // h(u) = min over arcs (Eq. 1 + h(v)), with h = 0 at the sinks; each stored weight is Eq. 1
+  // reduced by it, w + h(v) − h(u), hence never negative.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
+  FieldAnalysis a = analyzeField(m, f);
+  GeodesicGraph g(m, f, a, TracingParameters());
+  for (int p = 0; p < int(g.ports().size()); ++p) ASSERT_EQ(g.sinkDistance(g.sinkNode(p)), 0.0f);
+  long finite = 0, reduced = 0;
+  for (int u = 0; u < g.numNodeSlots(); ++u) {
+    const double hu = g.sinkDistance(u);
+    if (g.isSinkNode(u) || std::isinf(hu)) continue;
+    ++finite;
+    double best = std::numeric_limits<double>::infinity();
+    for (const GeodesicGraph::Arc* arc = g.arcsBegin(u); arc != g.arcsEnd(u); ++arc) {
+      if (GeodesicGraph::isDeadEnd(*arc)) continue;
+      const int v = GeodesicGraph::targetNode(*arc);
+      const double length = g.arcLength(u, v), hv = g.sinkDistance(v);
+      const double tolerance = 1e-5 * (hu + length);
+      ASSERT_GE(arc->weight, 0.0f) << "arc " << u << " -> " << v;
+      ASSERT_NEAR(arc->weight, length + hv - hu, tolerance) << "arc " << u << " -> " << v;
+      ASSERT_GE(length + hv, hu - tolerance) << "h(" << u << ") is longer than a way through " << v;
+      best = std::min(best, length + hv);
+      reduced += arc->weight < 0.999f * length;
+    }
+    ASSERT_NEAR(best, hu, 1e-5 * hu) << "h(" << u << ") is not the length of any way on";
+  }
+  EXPECT_GT(finite, g.numNodes() / 2);
+  EXPECT_GT(reduced, 0);
+}
+
+TEST(Tracing, SearchesFindTheSinksPlainDijkstraFinds) {
+  // Searches run on the reduced weights; plain Dijkstra on Eq. 1 (the paper's search) must
+  // find the same k nearest sinks at the same distances, from every port.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
+  FieldAnalysis a = analyzeField(m, f);
+  TracingParameters params;
+  params.k = 6;
+  GeodesicGraph g(m, f, a, params);
+  SearchOptions options;
+  options.maxSinks = params.k;
+  long compared = 0;
+  for (int port = 0; port < int(g.ports().size()); ++port) {
+    std::vector<double> dist(g.numNodeSlots(), std::numeric_limits<double>::infinity());
+    std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> queue;
+    dist[g.sourceNode(port)] = 0;
+    queue.push({0.0, g.sourceNode(port)});
+    std::vector<std::pair<double, int>> plain;  // (length, sink port), nearest first
+    while (!queue.empty() && int(plain.size()) < params.k) {
+      const auto [d, u] = queue.top();
+      queue.pop();
+      if (d > dist[u]) continue;
+      if (g.isSinkNode(u)) {
+        if (g.portOfNode(u) != port) plain.push_back({d, g.portOfNode(u)});
+        continue;
+      }
+      for (const GeodesicGraph::Arc* arc = g.arcsBegin(u); arc != g.arcsEnd(u); ++arc) {
+        const int v = GeodesicGraph::targetNode(*arc);
+        const double nd = d + g.arcLength(u, v);
+        if (nd < dist[v]) dist[v] = nd, queue.push({nd, v});
+      }
+    }
+    const std::vector<TracedPath> found = traceFromPort(g, port, options);
+    ASSERT_EQ(found.size(), plain.size()) << "port " << port;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      EXPECT_NEAR(found[i].length, plain[i].first, 1e-4 * plain[i].first) << "port " << port << ", sink " << i;
+      const bool tie = (i > 0 && plain[i].first - plain[i - 1].first < 1e-4 * plain[i].first) ||
+                       (i + 1 < plain.size() && plain[i + 1].first - plain[i].first < 1e-4 * plain[i].first);
+      if (!tie) EXPECT_EQ(found[i].sinkPort, plain[i].second) << "port " << port << ", sink " << i;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 5 * long(g.ports().size()));
 }
 
 TEST(Tracing, PathsEndOnTheBorderOnlyAcrossIt) {

@@ -123,14 +123,24 @@ public:
                     });
     });
     g_.numLiveNodes_ = std::count(live.begin(), live.end(), 1);
-    // Arcs into edge nodes without arcs out (their direction, carried into the next triangle,
-    // points back across the edge) lead nowhere either: complemented like border terminals,
-    // after the sort, so that the order of the arcs does not change.
+    // Searches for sinks run on weights reduced by the distance to the nearest sink (see
+    // sink_distance.h); arcs into nodes from which no sink can be reached (border terminals,
+    // edge nodes whose direction, carried into the next triangle, points back across the edge,
+    // and whatever leads only there) are complemented instead, after the sort, so that the
+    // order of the arcs does not change.
+    std::vector<int> sinks;
+    for (int p = 0; p < int(g_.ports_.size()); ++p) sinks.push_back(g_.sinkNode(p));
+    g_.sinkDistance_ = distancesToNearestTarget(begin, g_.arcs_, sinks, threads);
+    const std::vector<float>& h = g_.sinkDistance_;
     const int nodeRange = std::max(1, (numSlots + threads - 1) / threads);
     runOnWorkerThreads(threads, [&](int t) {
       const int from = std::min(numSlots, t * nodeRange), to = std::min(numSlots, from + nodeRange);
-      for (auto a = g_.arcs_.begin() + begin[from], end = g_.arcs_.begin() + begin[to]; a != end; ++a)
-        if (a->target >= 0 && !g_.isPortNode(a->target) && begin[a->target] == begin[a->target + 1]) a->target = ~a->target;
+      for (int u = from; u < to; ++u)
+        for (auto a = g_.arcs_.begin() + begin[u], end = g_.arcs_.begin() + begin[u + 1]; a != end; ++a) {
+          const int v = GeodesicGraph::targetNode(*a);
+          if (std::isinf(h[v])) a->target = ~v;
+          else a->weight = float(std::max(0.0, double(a->weight) + double(h[v]) - double(h[u])));
+        }
     });
   }
 
@@ -357,6 +367,24 @@ GeodesicGraph::GeodesicGraph(const SurfaceMesh& mesh, const CrossField& field, c
     throw std::invalid_argument("the field or its analysis does not belong to this mesh");
   sampling_ = sampleEdges(mesh, params_.phiDeg * kPi / 180.0, 48, params_.threads);
   GeodesicGraphBuilder(*this).build();
+}
+
+GeodesicGraph::ArcFrame GeodesicGraph::arcFrame(int from, int to) const {
+  if (!isPortNode(from)) return {nodeFace(from), nodeDirection(from)};
+  const int e = sampling_.sampleEdge[nodeSample(to)];
+  if (isBorderTerminal(to)) return {sampling_.edgeFace[e][0], nodeDirection(to)};
+  // The target continues into the face across its edge, its direction carried there.
+  const int side = sampling_.edgeFace[e][0] == nodeFace(to) ? 1 : 0;
+  const int face = sampling_.edgeFace[e][side];
+  return {face, mod4(nodeDirection(to) - analysis_->matching[face][sampling_.edgeLocal[e][side]])};
+}
+
+float GeodesicGraph::arcLength(int from, int to) const {
+  auto position = [&](int node) -> const Vec3& {
+    return isPortNode(node) ? mesh_->position(ports_[portOfNode(node)].vertex) : sampling_.samplePosition[nodeSample(node)];
+  };
+  const ArcFrame frame = arcFrame(from, to);
+  return float(anisotropicLength(position(to) - position(from), field_->direction(*mesh_, frame.face, frame.direction), params_.alpha));
 }
 
 int GeodesicGraph::portAtFlatAngle(int singularity, double flat) const {

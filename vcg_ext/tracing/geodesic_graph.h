@@ -17,9 +17,10 @@
 // non-tree edge, so slots are numbered combed direction first:
 //    slot = (combed · numSamples + sample) · 2 + side,   side = side of t w.r.t. the edge
 //    (see EdgeSampling), then the port nodes.
-// Arcs (stored in one flat CSR array of {target, weight}; a target that is a border terminal,
-// or an edge node without arcs out, is stored complemented, ~node, so that searches that only
-// look for sinks skip such dead ends without a lookup)
+// Arcs (stored in one flat CSR array of {target, weight}; a target from which no sink can be
+// reached, such as a border terminal or an edge node without arcs out, is stored complemented,
+// ~node, so that searches that only look for sinks skip such dead ends without a lookup; the
+// weights are stored reduced by the distances to the nearest sink, see sink_distance.h)
 //  - From an edge node (s, t, j) to every auxiliary point s' on the two other edges of t whose
 //    direction s' − s lies within 45° of direction j of t (its sector); the target is the node
 //    of s' in the triangle t' across that edge, carrying the transported direction
@@ -37,6 +38,7 @@
 
 #include "field/field_analysis.h"
 #include "tracing/edge_sampling.h"
+#include "tracing/sink_distance.h"
 
 #include <cstdint>
 #include <vector>
@@ -106,12 +108,13 @@ public:
     return sampling_.edgeFace[sampling_.sampleEdge[nodeSample(node)]][nodeSide(node)];
   }
 
-  /// An arc of G: `target` is the node reached, complemented (~node, negative) when that node
-  /// is a dead end: a border terminal or an edge node without arcs out; weight = Eq. 1.
-  struct Arc {
-    int target;
-    float weight;
-  };
+  /// An arc of G: `target` is the node reached, complemented (~node, negative) when no sink
+  /// can be reached from that node (a border terminal, an edge node without arcs out, or one
+  /// whose every way on ends so); `weight` is the arc's length of Eq. 1 reduced by the
+  /// distances to the nearest sink, w + h(target) − h(source) ≥ 0 (see sink_distance.h; only
+  /// searches for sinks use it: arcLength() gives Eq. 1 itself), or, for a complemented
+  /// target, Eq. 1 unreduced.
+  using Arc = WeightedArc;
   /// Whether no path through the arc's target reaches a sink: only searches that end paths
   /// at the border or at a crossing on the way need such arcs.
   static bool isDeadEnd(const Arc& a) { return a.target < 0; }
@@ -122,6 +125,18 @@ public:
   /// Arcs leaving `node`: [arcsBegin(node), arcsEnd(node)).
   const Arc* arcsBegin(int node) const { return arcs_.data() + arcBegin_[node]; }
   const Arc* arcsEnd(int node) const { return arcs_.data() + arcBegin_[node + 1]; }
+  /// Length of the shortest path from `node` to any sink (+infinity if there is none).
+  float sinkDistance(int node) const { return sinkDistance_[node]; }
+  /// The face the move of arc `from` → `to` crosses and the direction index it follows there
+  /// (for a source arc: the face behind the target's edge, the port's direction carried).
+  struct ArcFrame {
+    int face;
+    int direction;
+  };
+  ArcFrame arcFrame(int from, int to) const;
+  /// Eq. 1 for the move of arc `from` → `to`, the same number the graph was built with (its
+  /// stored weight is reduced).
+  float arcLength(int from, int to) const;
   /// Asks the cache for where the arcs of `node` are (searches prefetch ahead).
   void prefetchArcRange(int node) const { __builtin_prefetch(arcBegin_.data() + node); }
 
@@ -148,6 +163,7 @@ private:
   std::vector<int> faceRotation_;
   std::vector<std::uint32_t> arcBegin_;  ///< per slot, plus one
   std::vector<Arc> arcs_;
+  std::vector<float> sinkDistance_;  ///< per slot: h, the distance to the nearest sink
   long numLiveNodes_ = 0;
   friend class GeodesicGraphBuilder;
 };

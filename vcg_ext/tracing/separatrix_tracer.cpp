@@ -1,6 +1,7 @@
 #include "tracing/separatrix_tracer.h"
 
 #include "mesh/worker_threads.h"
+#include "tracing/radix_heap.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -17,8 +18,6 @@ namespace fcql {
 namespace {
 
 constexpr double kEps = 1e-9;
-
-int mod4(int x) { return ((x % 4) + 4) % 4; }
 
 /// Local index, in face f, of the edge carrying sample q.
 int localEdgeOfSample(const EdgeSampling& es, int q, int f) {
@@ -37,30 +36,21 @@ PathSegment arcSegment(const GeodesicGraph& g, int u, int v) {
   const SurfaceMesh& mesh = g.mesh();
   const EdgeSampling& es = g.sampling();
   PathSegment seg;
+  const GeodesicGraph::ArcFrame frame = g.arcFrame(u, v);
+  seg.face = frame.face;
+  seg.direction = frame.direction;
   if (g.isPortNode(u)) {  // source arc: from the singular vertex to the sample of v
-    int q = g.nodeSample(v);
-    int e = es.sampleEdge[q];
-    if (g.isBorderTerminal(v)) {
-      seg.face = es.edgeFace[e][0];
-      seg.direction = g.nodeDirection(v);
-    } else {
-      int across = g.nodeFace(v);
-      seg.face = es.edgeFace[e][0] == across ? es.edgeFace[e][1] : es.edgeFace[e][0];
-      int i = localEdgeOfSample(es, q, seg.face);
-      seg.direction = mod4(g.nodeDirection(v) - g.analysis().matching[seg.face][i]);
-    }
+    const int q = g.nodeSample(v);
     seg.from = cornerCoordinate(cornerOf(mesh, seg.face, g.ports()[g.portOfNode(u)].vertex));
     seg.to = edgeCoordinate(localEdgeOfSample(es, q, seg.face), es.paramInFace(q, seg.face));
     return seg;
   }
-  int qa = g.nodeSample(u);
-  seg.face = g.nodeFace(u);
-  seg.direction = g.nodeDirection(u);
+  const int qa = g.nodeSample(u);
   seg.from = edgeCoordinate(localEdgeOfSample(es, qa, seg.face), es.paramInFace(qa, seg.face));
   if (g.isPortNode(v)) {
     seg.to = cornerCoordinate(cornerOf(mesh, seg.face, g.ports()[g.portOfNode(v)].vertex));
   } else {
-    int qb = g.nodeSample(v);
+    const int qb = g.nodeSample(v);
     seg.to = edgeCoordinate(localEdgeOfSample(es, qb, seg.face), es.paramInFace(qb, seg.face));
   }
   return seg;
@@ -119,83 +109,6 @@ bool meetsBeforeEnd(const Vec3& a0, const Vec3& a1, const BarrierSet::Chord& c) 
   return true;
 }
 
-/// A radix heap (Ahuja, Mehlhorn, Orlin, Tarjan 1990) of (distance, node): a monotone
-/// priority queue, which is all Dijkstra needs (no key pushed is below the last one popped).
-/// Non-negative floats order like their bit patterns, so keys are those bits; an entry lives
-/// in the bucket of the highest bit in which its key differs from the last key popped. Pushes
-/// are O(1) and each entry moves down at most 32 times, without the branchy sift-downs of a
-/// comparison heap. Among equal keys the order is fixed (last in, first out), so results do
-/// not depend on timing. A node is in the heap at most once: a shorter distance found for it
-/// moves its entry (decrease), found through the position kept per node, instead of adding a
-/// second one that would be popped stale later (half of all pops, before).
-class RadixHeap {
-public:
-  using Entry = std::pair<float, int>;
-  bool empty() const { return size_ == 0; }
-  void clear() {
-    for (auto& b : buckets_) b.clear();
-    size_ = 0;
-    last_ = 0;
-  }
-  void push(Entry e) {
-    place({keyOf(e.first), e.second});
-    ++size_;
-  }
-  /// Lowers the key of `node`, in the heap with key `old`, to `e.first`.
-  void decrease(float old, Entry e) {
-    auto& b = buckets_[bucketOf(keyOf(old))];
-    const int at = position_[e.second];
-    b[at] = b.back();
-    if (b[at].node >= 0) position_[b[at].node] = at;
-    b.pop_back();
-    --size_;
-    push(e);
-  }
-  /// Room for the positions of nodes 0 .. nodes − 1 (terminals, negative, are never moved).
-  void resize(std::size_t nodes) { position_.resize(nodes); }
-  /// Removes and returns an entry with the smallest key. Requires !empty().
-  Entry pop() {
-    if (buckets_[0].empty()) {
-      int i = 1;
-      while (buckets_[i].empty()) ++i;
-      std::uint32_t smallest = buckets_[i][0].key;
-      for (const Item& it : buckets_[i]) smallest = std::min(smallest, it.key);
-      last_ = smallest;
-      for (const Item& it : buckets_[i]) place(it);
-      buckets_[i].clear();
-    }
-    Item it = buckets_[0].back();
-    buckets_[0].pop_back();
-    --size_;
-    float d;
-    std::memcpy(&d, &it.key, sizeof d);
-    return {d, it.node};
-  }
-
-private:
-  struct Item {
-    std::uint32_t key;
-    int node;
-  };
-  static std::uint32_t keyOf(float d) {
-    std::uint32_t k;
-    std::memcpy(&k, &d, sizeof k);
-    return k;
-  }
-  int bucketOf(std::uint32_t key) const { return key == last_ ? 0 : 32 - __builtin_clz(key ^ last_); }
-  /// Appends the item to its bucket, noting where a node went.
-  void place(const Item& it) {
-    auto& b = buckets_[bucketOf(it.key)];
-    if (it.node >= 0) position_[it.node] = int(b.size());
-    b.push_back(it);
-  }
-
-  std::array<std::vector<Item>, 33> buckets_;
-  std::vector<int> position_;  ///< per node: its index in its bucket while in the heap
-  std::size_t size_ = 0;
-  std::uint32_t last_ = 0;
-};
-
 struct Terminal {
   int pred;
   int barrier;
@@ -218,6 +131,11 @@ public:
     heap.push({0.0f, source});
     const BarrierSet* barriers = opt.barriers && !opt.barriers->empty() ? opt.barriers : nullptr;
     const double alpha = g_.parameters().alpha;
+    // Searches for sinks run on the reduced weights (sink_distance.h): a path's reduced length
+    // is its length minus the source's distance to the nearest sink (a sink's own is 0).
+    // T-junction searches end at crossings and at the border as well, so they run on Eq. 1.
+    const bool reduced = !opt.tJunctionMode;
+    const double sourceOffset = reduced ? g_.sinkDistance(source) : 0.0;
     int sinks = 0;
     // Once every sink the search may stop at has been found, nothing more can be: stop there
     // instead of exhausting the graph (the solving cycle's searches allow only the few ports
@@ -238,7 +156,7 @@ public:
         int p = g_.portOfNode(u);
         bool allowed = p != port && (opt.sinkAllowed.empty() || opt.sinkAllowed[p] != 0);
         if (!allowed) continue;
-        found.push_back(buildPath(port, u, d, TracedPath::Sink));
+        found.push_back(buildPath(port, u, double(d) + sourceOffset, TracedPath::Sink));
         found.back().sinkPort = p;
         if (opt.tJunctionMode || ++sinks >= wanted) break;
         continue;
@@ -262,7 +180,7 @@ public:
           if (!opt.tJunctionMode) continue;  // paths reaching the border or a dead end are dropped
           v = ~v;
         }
-        float nd = d + a->weight;
+        const float nd = d + (reduced ? a->weight : g_.arcLength(u, v));
         if (barriers) {
           // Nodes at distance <= d are settled (ties aside): nothing to test there.
           if (state_[v].dist <= d) continue;

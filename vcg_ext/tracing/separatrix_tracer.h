@@ -2,6 +2,10 @@
 // source node of a port, stopping after k sinks are reached, with optional barriers (a set of
 // separatrices that may not be crossed tangentially) and a t-junction mode that stops at the
 // first orthogonal crossing of a barrier or at the border.
+// Searches for sinks run on G's weights reduced by the distance to the nearest sink (A* with
+// an exact heuristic, sink_distance.h): the same sinks in the same order by the same shortest
+// paths as on Eq. 1's weights (ties and rounding aside), settling far fewer nodes (a third on
+// the bunny). T-junction searches run on Eq. 1 itself.
 #pragma once
 
 #include "tracing/geodesic_graph.h"
