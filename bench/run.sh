@@ -174,14 +174,14 @@ done
   measurements and the output files (`time_s.output`: what writing them adds after the quad
   stage; the layout's files are formatted on a second thread while the quads are made, so
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
-  Dijkstra search from every port until k sinks are reached) dominates where k = 30. The
-  issue's target, 10× below the paper's time, is met on rockerarm only (16–19.5× on the
-  layout, 12–15× on the whole run in six bench runs on 2026-12-02; the comparison is unfair
-  the other way: our rockerarm has 20K faces, the paper's 70K); the bunny is 6.6–9.1× below on
-  the layout and 5–7× on the whole run, fertility 5.9–7.7× and 4.3–5.7× (7.1–7.7× in the runs
-  since the conflict cliques per chord, but for one at 5.9× when the whole machine ran slow),
-  the dragon 4.7–5.8× and 2.7–3.2× (it was 1.0× and 0.8× before its first 0-1 program stopped
-  once its best solution stalled, below). Times vary by 10–40% from run to run on this machine (a shared virtual
+  Dijkstra search from every port until k sinks are reached, now guided by the exact distance
+  to the nearest sink, below) no longer dominates alone. The issue's target, 10× below the
+  paper's time on the layout, is met on rockerarm (22–23×; the comparison is unfair the other
+  way: our rockerarm has 20K faces, the paper's 70K) and on the bunny (11–13×, 8–8.5× on the
+  whole run), and nearly on fertility (9.0–9.5×, 6.3× on the whole run); not on the dragon
+  (5×: its first 0-1 program takes 10 s, below; it was 1.0× before that program stopped once
+  its best solution stalled). Before the searches were guided (six bench runs on 2026-12-02):
+  bunny 6.6–9.1×, fertility 5.9–7.7×, rockerarm 16–19.5×. Times vary by 10–40% from run to run on this machine (a shared virtual
   machine: the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the
   same tracing code).
 - **Quality**: every mesh is within 1% of the diagonal. Where the quads stray farther, the
@@ -386,6 +386,49 @@ whole command, output files included):
 | bunny (α 15, k 30) | 0.46 → 0.42 s | 2.55 → 1.86 s (1.37×) | 0.30 → 0.26 s | 5.03 → 3.68 s (1.37×) |
 | fertility (α 30, k 30) | 0.40 → 0.40 s | 2.80 → 1.76 s (1.59×) | 1.06 → 0.76 s | 6.77 → 4.68 s (1.45×) |
 | rockerarm (α 30, k 30) | 0.37 → 0.34 s | 1.76 → 1.24 s (1.42×) | 0.20 → 0.25 s | 4.79 → 3.65 s (1.31×) |
+
+### Searches with a potential (fifth session, 2026-12-02)
+
+A search from a port stops at its k-th sink, but Dijkstra settles every node nearer the port
+than that sink, though most of them lie on no short way to any sink. Graph G now computes,
+once, h(n) = the length of the shortest path from node n to any sink (Dijkstra on the reversed
+graph from all sinks at once), and stores each arc's weight reduced by it, w + h(v) − h(u),
+which is never negative. A path's reduced length is its length minus h(source), so Dijkstra on
+the reduced weights finds the same sinks in the same order by the same shortest paths (A* with
+the exact distance to the nearest sink as its heuristic), and a node from which no sink can be
+reached (h infinite) is skipped like a border terminal. Paths' lengths are reported in Eq. 1,
+as before; t-junction searches, which also end at crossings and at the border, run on Eq. 1
+recomputed per arc (the same number the graph was built with). The searches settle about a
+third of the nodes: 27.9M → 10.5M on the bunny, 22.2M → 8.5M on fertility. (A* with the
+Euclidean distance to the nearest singular vertex, tried before, saved only 10%: the
+anisotropic weights make field-coherent paths far longer than straight lines. The exact
+distance knows the field.)
+
+h costs one search over the whole graph, which no thread shares: each of the two threads
+searches from half of the sinks with distances of its own, and neither records nor settles a
+distance where the other already holds a shorter one (an equal one, for the second thread);
+the minimum of the two is exact whatever the timing (a test compares it bit for bit with a
+textbook Dijkstra on 1, 2, 3 and 5 threads), and each covers 55% of the nodes. With stale
+entries skipped when popped instead of moved (the searches' heap moves them: here that was
+slower), h takes 0.3 s on fertility, 0.6 s on the dragon (3172 sinks); building the reversed
+graph takes 0.07–0.16 s of that, and building it on both threads gained nothing (the writes
+are scattered) and was not kept.
+
+The same separatrix polylines as before on all twelve shared meshes (compared as sets: the
+order of the arcs of H can change where two opposite paths tie). Before (HEAD 0d8475d) and
+after, `fcql run` alternating in one session (*layout* as in the table above):
+
+| mesh | graph | tracing | layout | paper ÷ layout |
+|---|---:|---:|---:|---:|
+| bunny (α 15, k 30) | 0.62 → 0.94 s | 2.55 → 0.95 s | 3.53 → 2.34 s | 7.5× → 11.2× |
+| fertility (α 30, k 30) | 0.43 → 0.82 s | 2.16 → 1.00 s | 3.16 → 2.44 s | 7.0× → 9.0× |
+| rockerarm (α 30, k 30) | 0.39 → 0.87 s | 1.57 → 0.68 s | 2.38 → 1.94 s | 18.2× → 22.3× |
+| dragon (α 15, k 10) | 0.53 → 1.27 s | 1.11 → 0.51 s | 12.27 → 12.85 s | 5.2× → 5.0× |
+
+The dragon's time is its 0-1 program (about 10 s, unchanged). The 446K-face bunny (`fcql
+layout`, α 15, k 30): tracing 66.4 → 17.7 s, graph 11.1 → 21.1 s (h: 10 s, on a graph of 24M
+nodes and 104M arcs), the whole command 104 → 66 s; peak memory 2.73 → 2.87 GB; 89 of its 90
+separatrices are the same, one other path ties.
 
 ### The dragon's 0-1 program (fourth session, 2026-12-02)
 
