@@ -27,7 +27,8 @@ LayoutResult solveLayoutStage(const fcql::SurfaceMesh& mesh, const fcql::CrossFi
     progress(90, "closing the patches that are not disks");
     fcql::FieldAnalysis withAnchors = analysis;
     std::unique_ptr<fcql::GeodesicGraph> graph(
-        new fcql::GeodesicGraph(mesh, field, withAnchors, trace.graph->parameters()));
+        new fcql::GeodesicGraph(mesh, field, withAnchors, trace.graph->parameters(),
+                                fcql::GeodesicGraph::SinkDistances::Skipped));
     r.closing = fcql::closeNonDiskPatches(mesh, field, withAnchors, graph, r.layout, r.patches);
     r.closingRan = true;
   }

@@ -31,7 +31,8 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
       std::any_of(ls.patches.patches.begin(), ls.patches.patches.end(), [](const PatchReport& p) { return !p.isDisk; })) {
     progress(quiet, "some regions are not disks: tracing field lines to close them");
     ls.analysis = fs.analysis;
-    ls.graph = std::make_unique<GeodesicGraph>(fs.mesh, fs.field, ls.analysis, ts.graph->parameters());
+    ls.graph = std::make_unique<GeodesicGraph>(fs.mesh, fs.field, ls.analysis, ts.graph->parameters(),
+                                               GeodesicGraph::SinkDistances::Skipped);
     closing = closeNonDiskPatches(fs.mesh, fs.field, ls.analysis, ls.graph, ls.layout, ls.patches);
   }
   ls.cutSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - cutStart).count();

@@ -89,7 +89,7 @@ ClosingReport closeNonDiskPatches(const SurfaceMesh& mesh, const CrossField& fie
     sv.ports = computePorts(mesh, field, v);
     if (sv.ports.size() != 4) break;
     analysis.singularities.push_back(sv);
-    graph = std::make_unique<GeodesicGraph>(mesh, field, analysis, graph->parameters());
+    graph = std::make_unique<GeodesicGraph>(mesh, field, analysis, graph->parameters(), GeodesicGraph::SinkDistances::Skipped);
     ++report.virtualVertices;
     const int first = graph->firstPort()[analysis.singularities.size() - 1];
     std::vector<int> ports = {first, first + 1, first + 2, first + 3};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -54,7 +55,8 @@ void TracingParameters::validate() const {
 
 class GeodesicGraphBuilder {
 public:
-  explicit GeodesicGraphBuilder(GeodesicGraph& g) : g_(g), mesh_(*g.mesh_), field_(*g.field_), analysis_(*g.analysis_) {}
+  GeodesicGraphBuilder(GeodesicGraph& g, GeodesicGraph::SinkDistances sinkDistances)
+      : g_(g), mesh_(*g.mesh_), field_(*g.field_), analysis_(*g.analysis_), sinkDistances_(sinkDistances) {}
 
   void build() {
     combFaces();
@@ -127,19 +129,28 @@ public:
     // sink_distance.h); arcs into nodes from which no sink can be reached (border terminals,
     // edge nodes whose direction, carried into the next triangle, points back across the edge,
     // and whatever leads only there) are complemented instead, after the sort, so that the
-    // order of the arcs does not change.
-    std::vector<int> sinks;
-    for (int p = 0; p < int(g_.ports_.size()); ++p) sinks.push_back(g_.sinkNode(p));
-    g_.sinkDistance_ = distancesToNearestTarget(begin, g_.arcs_, sinks, threads);
-    const std::vector<float>& h = g_.sinkDistance_;
+    // order of the arcs does not change. Without the distances (SinkDistances::Skipped), h is
+    // 0 wherever a path can go on (a potential too, if a weak one): the weights stay Eq. 1 and
+    // only the arcs into border terminals and nodes without arcs out are complemented.
+    std::vector<float>& h = g_.sinkDistance_;
+    if (sinkDistances_ == GeodesicGraph::SinkDistances::Computed) {
+      std::vector<int> sinks;
+      for (int p = 0; p < int(g_.ports_.size()); ++p) sinks.push_back(g_.sinkNode(p));
+      h = distancesToNearestTarget(begin, g_.arcs_, sinks, std::min(threads, 4));
+    } else {
+      h.assign(numSlots, 0.0f);
+      for (int n = 0; n < numSlots; ++n)
+        if (!g_.isPortNode(n) && begin[n] == begin[n + 1]) h[n] = std::numeric_limits<float>::infinity();
+    }
     const int nodeRange = std::max(1, (numSlots + threads - 1) / threads);
     runOnWorkerThreads(threads, [&](int t) {
       const int from = std::min(numSlots, t * nodeRange), to = std::min(numSlots, from + nodeRange);
       for (int u = from; u < to; ++u)
         for (auto a = g_.arcs_.begin() + begin[u], end = g_.arcs_.begin() + begin[u + 1]; a != end; ++a) {
           const int v = GeodesicGraph::targetNode(*a);
-          if (std::isinf(h[v])) a->target = ~v;
-          else a->weight = float(std::max(0.0, double(a->weight) + double(h[v]) - double(h[u])));
+          const double reduced = double(a->weight) + double(h[v]) - double(h[u]);
+          if (std::isinf(h[v]) || std::isnan(reduced)) a->target = ~v;  // NaN: a broken move, never taken
+          else a->weight = float(std::max(0.0, reduced));
         }
     });
   }
@@ -357,16 +368,17 @@ private:
   const FieldAnalysis& analysis_;
   std::vector<SingularStar> stars_;
   std::unordered_map<int, int> singularityOfVertex_;
+  GeodesicGraph::SinkDistances sinkDistances_;
 };
 
 GeodesicGraph::GeodesicGraph(const SurfaceMesh& mesh, const CrossField& field, const FieldAnalysis& analysis,
-                             const TracingParameters& params)
+                             const TracingParameters& params, SinkDistances sinkDistances)
     : mesh_(&mesh), field_(&field), analysis_(&analysis), params_(params) {
   params_.validate();
   if (field.numFaces() != mesh.numFaces() || int(analysis.matching.size()) != mesh.numFaces())
     throw std::invalid_argument("the field or its analysis does not belong to this mesh");
   sampling_ = sampleEdges(mesh, params_.phiDeg * kPi / 180.0, 48, params_.threads);
-  GeodesicGraphBuilder(*this).build();
+  GeodesicGraphBuilder(*this, sinkDistances).build();
 }
 
 GeodesicGraph::ArcFrame GeodesicGraph::arcFrame(int from, int to) const {

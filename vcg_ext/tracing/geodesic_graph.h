@@ -71,8 +71,12 @@ struct PortNode {
 
 class GeodesicGraph {
 public:
+  /// Whether the graph computes each node's distance to the nearest sink, which guides the
+  /// searches for sinks (see sink_distance.h). A graph used only by t-junction searches, which
+  /// run on Eq. 1, can skip it: searches for sinks are then unguided, with the same results.
+  enum class SinkDistances { Computed, Skipped };
   GeodesicGraph(const SurfaceMesh& mesh, const CrossField& field, const FieldAnalysis& analysis,
-                const TracingParameters& params);
+                const TracingParameters& params, SinkDistances sinkDistances = SinkDistances::Computed);
 
   const SurfaceMesh& mesh() const { return *mesh_; }
   const CrossField& field() const { return *field_; }
@@ -125,7 +129,8 @@ public:
   /// Arcs leaving `node`: [arcsBegin(node), arcsEnd(node)).
   const Arc* arcsBegin(int node) const { return arcs_.data() + arcBegin_[node]; }
   const Arc* arcsEnd(int node) const { return arcs_.data() + arcBegin_[node + 1]; }
-  /// Length of the shortest path from `node` to any sink (+infinity if there is none).
+  /// Length of the shortest path from `node` to any sink (+infinity if there is none); with
+  /// SinkDistances::Skipped, 0 wherever a path can go on.
   float sinkDistance(int node) const { return sinkDistance_[node]; }
   /// The face the move of arc `from` → `to` crosses and the direction index it follows there
   /// (for a source arc: the face behind the target's edge, the port's direction carried).

@@ -6,81 +6,141 @@
 #include <atomic>
 #include <limits>
 #include <memory>
+#include <random>
 
 namespace fcql {
+namespace {
 
-std::vector<float> distancesToNearestTarget(const std::vector<std::uint32_t>& begin, const std::vector<WeightedArc>& arcs,
-                                            const std::vector<int>& targets, int threads) {
-  const int n = int(begin.size()) - 1;
-  // The reversed graph in compressed rows: for each node, the arcs that end there.
-  std::vector<std::uint32_t> inBegin(n + 1, 0);
-  for (const WeightedArc& a : arcs)
-    if (a.target >= 0) ++inBegin[a.target + 1];
-  for (int v = 0; v < n; ++v) inBegin[v + 1] += inBegin[v];
-  std::vector<WeightedArc> in(inBegin[n]);
-  {
-    std::vector<std::uint32_t> fill(inBegin.begin(), inBegin.end() - 1);
-    for (int u = 0; u < n; ++u)
+/// The searches of distancesToNearestTarget: one per share of the targets, each with its own
+/// distances, kept side by side per node: dist[v · T + t]. A search neither records nor
+/// settles a distance at a node where another search already holds a shorter one (or an equal
+/// one, when that search comes first): what it would find beyond that node the other search
+/// finds as well, no longer, so each search covers about the part of the graph nearest its own
+/// targets. Other searches' distances are read as they go; such a value only ever falls towards
+/// its final one, so a stale read drops a node less often, never wrongly: the first search to
+/// reach a node's smallest distance records and settles it. Hence the minimum over the
+/// searches is the distance to the nearest target, the same number whatever the timing.
+class SharedSearches {
+public:
+  SharedSearches(const std::vector<std::uint32_t>& begin, const std::vector<WeightedArc>& arcs,
+                 const std::vector<int>& targets, int searches)
+      : n_(int(begin.size()) - 1), T_(searches), targets_(targets), heaps_(searches) {
+    // The reversed graph in compressed rows: for each node, the arcs that end there.
+    inBegin_.assign(n_ + 1, 0);
+    for (const WeightedArc& a : arcs)
+      if (a.target >= 0) ++inBegin_[a.target + 1];
+    for (int v = 0; v < n_; ++v) inBegin_[v + 1] += inBegin_[v];
+    in_.resize(inBegin_[n_]);
+    std::vector<std::uint32_t> fill(inBegin_.begin(), inBegin_.end() - 1);
+    for (int u = 0; u < n_; ++u)
       for (std::uint32_t i = begin[u]; i < begin[u + 1]; ++i)
-        if (arcs[i].target >= 0) in[fill[arcs[i].target]++] = {u, arcs[i].weight};
+        if (arcs[i].target >= 0) in_[fill[arcs[i].target]++] = {u, arcs[i].weight};
+    dist_.reset(new std::atomic<float>[std::size_t(n_) * T_]);
+    for (std::size_t i = 0; i < std::size_t(n_) * T_; ++i)
+      dist_[i].store(std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
   }
 
-  // One search per thread, each from its share of the targets, each with its own distances,
-  // kept side by side per node: dist[v · T + t]. A search neither records nor settles a
-  // distance at a node where another search already holds a shorter one (or an equal one, when
-  // that search comes first): what it would find beyond that node the other search finds as
-  // well, no longer, so each search covers about the part of the graph nearest its own
-  // targets. Other searches' distances are read as they go; such a value only ever falls
-  // towards its final one, so a stale read drops a node less often, never wrongly: the first
-  // search to reach a node's smallest distance records and settles it. Hence the minimum over
-  // the searches is the distance to the nearest target, the same number whatever the timing.
-  const int numSearches = workerThreadCount(threads, int(targets.size()));
-  const int T = numSearches;
-  std::unique_ptr<std::atomic<float>[]> dist(new std::atomic<float>[std::size_t(n) * T]);
-  for (std::size_t i = 0; i < std::size_t(n) * T; ++i) dist[i].store(std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
-  // Whether another search holds distance d or less at the node whose distances start at `at`.
-  auto heldElsewhere = [T](const std::atomic<float>* at, int t, float d) {
-    for (int s = 0; s < T; ++s) {
-      const float other = at[s].load(std::memory_order_relaxed);
+  int searches() const { return T_; }
+
+  /// Search t's targets enter its heap.
+  void start(int t) {
+    const std::size_t first = targets_.size() * t / T_, last = targets_.size() * (t + 1) / T_;
+    for (std::size_t i = first; i < last; ++i) {
+      std::atomic<float>& d = distance(targets_[i], t);
+      if (d.load(std::memory_order_relaxed) == 0) continue;
+      d.store(0, std::memory_order_relaxed);
+      heaps_[t].pushUntracked({0.0f, targets_[i]});
+    }
+  }
+
+  /// Search t pops one entry and, unless it is stale or another search holds its node, relaxes
+  /// the arcs into it. False once search t is done.
+  bool step(int t) {
+    RadixHeap& heap = heaps_[t];
+    if (heap.empty()) return false;
+    const auto [d, v] = heap.pop();
+    if (d > distance(v, t).load(std::memory_order_relaxed) || heldElsewhere(v, t, d)) return true;
+    const std::uint32_t first = inBegin_[v], last = inBegin_[v + 1];
+    for (std::uint32_t i = first; i < last; ++i) __builtin_prefetch(&distance(in_[i].target, 0));
+    for (std::uint32_t i = first; i < last; ++i) {
+      const int u = in_[i].target;
+      const float nd = d + in_[i].weight;
+      std::atomic<float>& du = distance(u, t);
+      if (nd < du.load(std::memory_order_relaxed) && !heldElsewhere(u, t, nd)) {
+        du.store(nd, std::memory_order_relaxed);
+        heap.pushUntracked({nd, u});
+        __builtin_prefetch(&inBegin_[u]);
+      }
+    }
+    return true;
+  }
+
+  /// The minimum over the searches, once all are done.
+  std::vector<float> nearest() const {
+    std::vector<float> out(n_);
+    for (int v = 0; v < n_; ++v) {
+      float best = std::numeric_limits<float>::infinity();
+      for (int t = 0; t < T_; ++t) best = std::min(best, dist_[std::size_t(v) * T_ + t].load(std::memory_order_relaxed));
+      out[v] = best;
+    }
+    return out;
+  }
+
+private:
+  std::atomic<float>& distance(int v, int t) const { return dist_[std::size_t(v) * T_ + t]; }
+
+  /// Whether another search holds distance d or less at node v (d itself, if it comes first).
+  bool heldElsewhere(int v, int t, float d) const {
+    for (int s = 0; s < T_; ++s) {
+      const float other = distance(v, s).load(std::memory_order_relaxed);
       if (s < t ? other <= d : (s > t && other < d)) return true;
     }
     return false;
-  };
-  runOnWorkerThreads(numSearches, [&](int t) {
-    RadixHeap heap;
-    const std::size_t firstTarget = targets.size() * t / T, lastTarget = targets.size() * (t + 1) / T;
-    for (std::size_t i = firstTarget; i < lastTarget; ++i) {
-      std::atomic<float>& d = dist[std::size_t(targets[i]) * T + t];
-      if (d.load(std::memory_order_relaxed) == 0) continue;
-      d.store(0, std::memory_order_relaxed);
-      heap.pushUntracked({0.0f, targets[i]});
-    }
-    while (!heap.empty()) {
-      const auto [d, v] = heap.pop();
-      std::atomic<float>* at = &dist[std::size_t(v) * T];
-      // A stale entry (a shorter distance was pushed later), or a node another search holds.
-      if (d > at[t].load(std::memory_order_relaxed) || heldElsewhere(at, t, d)) continue;
-      const std::uint32_t first = inBegin[v], last = inBegin[v + 1];
-      for (std::uint32_t i = first; i < last; ++i) __builtin_prefetch(&dist[std::size_t(in[i].target) * T]);
-      for (std::uint32_t i = first; i < last; ++i) {
-        const int u = in[i].target;
-        const float nd = d + in[i].weight;
-        std::atomic<float>& du = dist[std::size_t(u) * T + t];
-        if (nd < du.load(std::memory_order_relaxed) && !heldElsewhere(&dist[std::size_t(u) * T], t, nd)) {
-          du.store(nd, std::memory_order_relaxed);
-          heap.pushUntracked({nd, u});
-          __builtin_prefetch(&inBegin[u]);
-        }
-      }
+  }
+
+  int n_, T_;
+  const std::vector<int>& targets_;
+  std::vector<std::uint32_t> inBegin_;
+  std::vector<WeightedArc> in_;
+  std::unique_ptr<std::atomic<float>[]> dist_;
+  std::vector<RadixHeap> heaps_;
+};
+
+}  // namespace
+
+std::vector<float> distancesToNearestTarget(const std::vector<std::uint32_t>& begin, const std::vector<WeightedArc>& arcs,
+                                            const std::vector<int>& targets, int threads) {
+  SharedSearches searches(begin, arcs, targets, workerThreadCount(threads, int(targets.size())));
+  runOnWorkerThreads(searches.searches(), [&](int t) {
+    searches.start(t);
+    while (searches.step(t)) {
     }
   });
-  std::vector<float> nearest(n);
-  for (int v = 0; v < n; ++v) {
-    float best = std::numeric_limits<float>::infinity();
-    for (int t = 0; t < T; ++t) best = std::min(best, dist[std::size_t(v) * T + t].load(std::memory_order_relaxed));
-    nearest[v] = best;
-  }
-  return nearest;
+  return searches.nearest();
 }
 
+namespace detail {
+
+std::vector<float> distancesToNearestTargetInterleaved(const std::vector<std::uint32_t>& begin,
+                                                       const std::vector<WeightedArc>& arcs,
+                                                       const std::vector<int>& targets, int searches,
+                                                       std::uint32_t seed) {
+  SharedSearches shared(begin, arcs, targets, std::max(1, searches));
+  std::vector<int> running;
+  for (int t = 0; t < shared.searches(); ++t) shared.start(t), running.push_back(t);
+  std::mt19937 rng(seed);
+  while (!running.empty()) {
+    // A few steps of one search at a time, so that searches overtake each other.
+    const std::size_t pick = std::uniform_int_distribution<std::size_t>(0, running.size() - 1)(rng);
+    const int burst = std::uniform_int_distribution<int>(1, 8)(rng);
+    for (int i = 0; i < burst; ++i)
+      if (!shared.step(running[pick])) {
+        running.erase(running.begin() + pick);
+        break;
+      }
+  }
+  return shared.nearest();
+}
+
+}  // namespace detail
 }  // namespace fcql

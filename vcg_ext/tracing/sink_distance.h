@@ -31,4 +31,13 @@ struct WeightedArc {
 std::vector<float> distancesToNearestTarget(const std::vector<std::uint32_t>& begin, const std::vector<WeightedArc>& arcs,
                                             const std::vector<int>& targets, int threads = 0);
 
+namespace detail {
+/// The same searches, run on the calling thread a few steps at a time in an order drawn from
+/// `seed`: every way they can overtake each other, made repeatable, for tests.
+std::vector<float> distancesToNearestTargetInterleaved(const std::vector<std::uint32_t>& begin,
+                                                       const std::vector<WeightedArc>& arcs,
+                                                       const std::vector<int>& targets, int searches,
+                                                       std::uint32_t seed);
+}  // namespace detail
+
 }  // namespace fcql
