@@ -16,12 +16,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const double kCos45 = std::cos(kPi / 4) - 1e-12;
 
-/// An arc while the graph is built: its source slot and the stored arc.
-struct BuildArc {
-  int from;
-  GeodesicGraph::Arc arc;
-};
-
 bool withinSector(const Vec3& w, const Vec3& d) {
   double len = w.norm();
   return len > 0 && d.dot(w) >= kCos45 * len;
@@ -67,53 +61,36 @@ public:
                                " node slots, more than it can hold (2^30): use a larger phi");
     const int numSlots = int(slots);
     const int threads = workerThreadCount(g_.params_.threads, mesh_.numFaces());
-    std::vector<std::vector<BuildArc>> perThread(threads);
-    std::atomic<int> nextChunk{0};
-    const int chunk = 256;
-    auto work = [&](int t) {
-      auto& out = perThread[t];
-      for (;;) {
-        int begin = nextChunk.fetch_add(chunk);
-        if (begin >= mesh_.numFaces()) break;
-        int end = std::min(mesh_.numFaces(), begin + chunk);
-        for (int f = begin; f < end; ++f) faceArcs(f, out);
-      }
+    // Every edge node's arcs come from the one face it continues into (a source node's from
+    // its port), so the faces can be shared out among the threads, no node shared: a first
+    // pass counts each node's arcs, a second computes their weights and writes them in place.
+    auto forEachFace = [&](auto&& emit) {
+      std::atomic<int> nextChunk{0};
+      const int chunk = 256;
+      runOnWorkerThreads(threads, [&](int) {
+        for (int first; (first = nextChunk.fetch_add(chunk)) < mesh_.numFaces();)
+          for (int f = first, end = std::min(mesh_.numFaces(), first + chunk); f < end; ++f) faceArcs(f, emit);
+      });
+      for (int p = 0; p < int(g_.ports_.size()); ++p) sourceArcs(p, emit);
     };
-    runOnWorkerThreads(threads, work);
-    std::vector<BuildArc> portArcs;
-    for (int p = 0; p < int(g_.ports_.size()); ++p) sourceArcs(p, portArcs);
-
-    // Counting sort into CSR; within a node, arcs keep a deterministic order (by target).
     std::vector<std::uint32_t>& begin = g_.arcBegin_;
     begin.assign(numSlots + 1, 0);
-    long long total = long(portArcs.size());
-    for (auto& v : perThread) total += long(v.size());
+    forEachFace([&](int from, int, const auto&) { ++begin[from + 1]; });
+    long long total = 0;
+    for (int i = 0; i < numSlots; ++i) total += begin[i + 1];
     if (total >= (1LL << 32))
       throw std::runtime_error("graph G would have " + std::to_string(total) +
                                " arcs, more than it can hold (2^32): use a larger phi");
-    auto count = [&](const std::vector<BuildArc>& arcs) { for (const BuildArc& a : arcs) ++begin[a.from + 1]; };
-    for (auto& v : perThread) count(v);
-    count(portArcs);
     for (int i = 0; i < numSlots; ++i) begin[i + 1] += begin[i];
     g_.arcs_.resize(begin[numSlots]);
-    // Every edge node's arcs come from the one face it continues into (a source node's from
-    // its port), so all the arcs of a node lie in one buffer: the buffers are placed, the
-    // nodes' arcs sorted and the dead ends marked on the worker threads, no node shared.
     std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
     std::vector<unsigned char> live(numSlots, 0);
-    std::vector<std::vector<BuildArc>*> buffers;
-    for (auto& v : perThread) buffers.push_back(&v);
-    buffers.push_back(&portArcs);
-    runOnWorkerThreads(threads, [&](int t) {
-      for (std::size_t b = t; b < buffers.size(); b += threads) {
-        for (const BuildArc& a : *buffers[b]) {
-          g_.arcs_[fill[a.from]++] = a.arc;
-          __atomic_store_n(&live[a.from], 1, __ATOMIC_RELAXED);
-          __atomic_store_n(&live[GeodesicGraph::targetNode(a.arc)], 1, __ATOMIC_RELAXED);
-        }
-        std::vector<BuildArc>().swap(*buffers[b]);
-      }
+    forEachFace([&](int from, int target, const auto& weight) {
+      g_.arcs_[fill[from]++] = {target, weight()};
+      __atomic_store_n(&live[from], 1, __ATOMIC_RELAXED);
+      __atomic_store_n(&live[target < 0 ? ~target : target], 1, __ATOMIC_RELAXED);
     });
+    // Within a node, arcs keep a deterministic order (by target), whatever the threads.
     const int block = 1 << 14;
     std::atomic<int> nextBlock{0};
     runOnWorkerThreads(threads, [&](int) {
@@ -286,7 +263,10 @@ private:
     return !(len > 0) || std::abs(edge.dot(dir)) > kCos45 * len;
   }
 
-  void faceArcs(int f, std::vector<BuildArc>& out) const {
+  /// Calls emit(from, target, weight) for each arc out of the nodes continuing into face f,
+  /// `weight` a function computing its Eq. 1 (a first pass only counts).
+  template <class Emit>
+  void faceArcs(int f, Emit& emit) const {
     const EdgeSampling& es = g_.sampling_;
     const double alpha = g_.params_.alpha;
     Vec3 dirs[4];
@@ -317,8 +297,8 @@ private:
             for (int j = 0; j < 4; ++j) {
               const double dot = j < 2 ? along[j] : -along[j - 2];
               if (dot < kCos45 * len || (grazing[b] >> j & 1)) continue;
-              const int node = g_.edgeNode(qa, sideA, combed(f, j));
-              out.push_back({node, {nodeAcross(f, b, qb, j), float(anisotropicLength(w, dirs[j], alpha))}});
+              emit(g_.edgeNode(qa, sideA, combed(f, j)), nodeAcross(f, b, qb, j),
+                   [&] { return float(anisotropicLength(w, dirs[j], alpha)); });
             }
           }
         }
@@ -332,13 +312,15 @@ private:
           double unwrapped = 0;
           int p = portAt(s, k, from, &unwrapped);
           if (p < 0 || mod4(carriedPortDirection(p, k, unwrapped) + 2) != j) continue;
-          out.push_back({g_.edgeNode(qa, sideA, combed(f, j)), {g_.sinkNode(p), float(anisotropicLength(w, dirs[j], alpha))}});
+          emit(g_.edgeNode(qa, sideA, combed(f, j)), g_.sinkNode(p), [&] { return float(anisotropicLength(w, dirs[j], alpha)); });
         }
       }
     }
   }
 
-  void sourceArcs(int p, std::vector<BuildArc>& out) const {
+  /// The same for the arcs out of port p's source node.
+  template <class Emit>
+  void sourceArcs(int p, Emit& emit) const {
     const PortNode& pn = g_.ports_[p];
     const int s = pn.singularity;
     const Vec3& apex = mesh_.position(pn.vertex);
@@ -357,7 +339,7 @@ private:
         Vec3 w = to - apex;
         if (!withinSector(w, d)) continue;
         if (mesh_.adjacentFace(f, i) < 0 && meetsBorderTangentially(f, i, d)) continue;
-        out.push_back({g_.sourceNode(p), {nodeAcross(f, i, q, dir), float(anisotropicLength(w, d, g_.params_.alpha))}});
+        emit(g_.sourceNode(p), nodeAcross(f, i, q, dir), [&] { return float(anisotropicLength(w, d, g_.params_.alpha)); });
       }
     }
   }
