@@ -176,11 +176,12 @@ done
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached, now guided by the exact distance
   to the nearest sink, below) no longer dominates alone. The issue's target, 10× below the
-  paper's time on the layout, is met on rockerarm (22–23×; the comparison is unfair the other
-  way: our rockerarm has 20K faces, the paper's 70K) and on the bunny (11–13×, 8–8.5× on the
-  whole run), and nearly on fertility (9.0–9.5×, 6.3× on the whole run); not on the dragon
-  (5×: its first 0-1 program takes 10 s, below; it was 1.0× before that program stopped once
-  its best solution stalled). Before the searches were guided (six bench runs on 2026-12-02):
+  paper's time on the layout, is met on rockerarm (23–31× in two bench runs on 2026-12-02
+  with the guided searches; the comparison is unfair the other way: our rockerarm has 20K
+  faces, the paper's 70K) and on the bunny (12.7–13.9×, 8.5–9.6× on the whole run); fertility
+  is at 9.5–11.3× (6.3–7.7× on the whole run), on either side of it with this machine's
+  speed; the dragon is not (5.0–6.0×: its first 0-1 program takes 8.5–10 s, below; it was
+  1.0× before that program stopped once its best solution stalled). Before the searches were guided (six bench runs on 2026-12-02):
   bunny 6.6–9.1×, fertility 5.9–7.7×, rockerarm 16–19.5×. Times vary by 10–40% from run to run on this machine (a shared virtual
   machine: the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the
   same tracing code).
@@ -429,6 +430,14 @@ The dragon's time is its 0-1 program (about 10 s, unchanged). The 446K-face bunn
 layout`, α 15, k 30): tracing 66.4 → 17.7 s, graph 11.1 → 21.1 s (h: 10 s, on a graph of 24M
 nodes and 104M arcs), the whole command 104 → 66 s; peak memory 2.73 → 2.87 GB; 89 of its 90
 separatrices are the same, one other path ties.
+
+After a review: graphs that only t-junction searches use (the patch closing's, rebuilt per
+virtual vertex) skip h; at most 4 searches share h (each node keeps a distance per search); a
+test runs the searches interleaved in drawn orders on graphs full of exact ties. Graph G's
+arcs are now counted in a first pass and written in place in a second (each node's arcs come
+from one face, so no node is shared between threads), instead of being buffered per thread
+(12 bytes per arc) and copied: fertility's `fcql trace` peaks at 252 MB instead of 302 MB, in
+the same time (graph stage 0.66 against 0.67 s over four alternating runs).
 
 ### The dragon's 0-1 program (fourth session, 2026-12-02)
 
