@@ -308,32 +308,35 @@ long compareWithPlainDijkstra(const GeodesicGraph& g, const SearchOptions& optio
   return compared;
 }
 
+/// The same on a graph of m and f, searching for k sinks, every `allowEvery`-th port's sink
+/// allowed; also returns the number of ports.
+long compareWithPlainDijkstra(const SurfaceMesh& m, const CrossField& f, int k, int allowEvery, long* ports) {
+  FieldAnalysis a = analyzeField(m, f);
+  TracingParameters params;
+  params.k = k;
+  GeodesicGraph g(m, f, a, params);
+  SearchOptions options;
+  options.maxSinks = k;
+  options.sinkAllowed.assign(g.ports().size(), 0);
+  for (std::size_t p = 0; p < g.ports().size(); p += allowEvery) options.sinkAllowed[p] = 1;
+  *ports = long(g.ports().size());
+  return compareWithPlainDijkstra(g, options);
+}
+
 }  // namespace
 
 TEST(Tracing, SearchesFindTheSinksPlainDijkstraFinds) {
   FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
-  FieldAnalysis a = analyzeField(m, f);
-  TracingParameters params;
-  params.k = 6;
-  GeodesicGraph g(m, f, a, params);
-  SearchOptions options;
-  options.maxSinks = params.k;
-  EXPECT_GT(compareWithPlainDijkstra(g, options), 5 * long(g.ports().size()));
+  long ports = 0;
+  EXPECT_GT(compareWithPlainDijkstra(m, f, 6, 1, &ports), 5 * ports);
 }
 
 TEST(Tracing, SearchesFindTheAllowedSinksPlainDijkstraFindsOnAnOpenSurface) {
   // The lilium has a border (paths may not end on it in a search for sinks) and the
   // solving cycle's searches allow only some sinks: h, taken over all sinks, still guides.
   FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "lilium");
-  FieldAnalysis a = analyzeField(m, f);
-  TracingParameters params;
-  params.k = 4;
-  GeodesicGraph g(m, f, a, params);
-  SearchOptions options;
-  options.maxSinks = params.k;
-  options.sinkAllowed.assign(g.ports().size(), 0);
-  for (std::size_t p = 0; p < g.ports().size(); p += 3) options.sinkAllowed[p] = 1;
-  EXPECT_GT(compareWithPlainDijkstra(g, options), long(g.ports().size()));
+  long ports = 0;
+  EXPECT_GT(compareWithPlainDijkstra(m, f, 4, 3, &ports), ports);
 }
 
 TEST(Tracing, GraphWithoutSinkDistancesKeepsEquationOneAndFindsTheSameSinks) {
