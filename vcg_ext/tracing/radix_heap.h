@@ -1,6 +1,7 @@
 // A monotone priority queue of (distance, node) for Dijkstra's searches in graph G.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -15,9 +16,11 @@ namespace fcql {
 /// in the bucket of the highest bit in which its key differs from the last key popped. Pushes
 /// are O(1) and each entry moves down at most 32 times, without the branchy sift-downs of a
 /// comparison heap. Among equal keys the order is fixed (last in, first out), so results do
-/// not depend on timing. A node is in the heap at most once: a shorter distance found for it
-/// moves its entry (decrease), found through the position kept per node, instead of adding a
-/// second one that would be popped stale later (half of all pops, before).
+/// not depend on timing. Pushed with push(), a node is in the heap at most once: a shorter
+/// distance found for it moves its entry (decrease), found through the position kept per node,
+/// instead of adding a second one that would be popped stale later (half of all pops in the
+/// searches from the ports). pushUntracked() leaves that bookkeeping to the caller, who skips
+/// stale entries when they are popped (cheaper where positions would be written far apart).
 class RadixHeap {
 public:
   using Entry = std::pair<float, int>;
