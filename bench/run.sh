@@ -439,6 +439,16 @@ from one face, so no node is shared between threads), instead of being buffered 
 (12 bytes per arc) and copied: fertility's `fcql trace` peaks at 252 MB instead of 302 MB, in
 the same time (graph stage 0.66 against 0.67 s over four alternating runs).
 
+The dragon's first 0-1 program, tried again (its largest part written out as an LP file and
+solved by lp_solve alone, with the 3 s stall): the exact neighbourhood-weight rule (a candidate
+weighing at least as much as all it conflicts with is taken) applies to 12 of its 10,823
+candidates; lp_solve's scaling modes give 5.1–6.5 s for the LP relaxation against 5.3 s by
+default; growing each conflict clique greedily into a maximal one (9043 rows of 9.1 candidates
+on average instead of 11,434 of 6.2) tightens the LP bound (4083 instead of 4098) and shortens
+the LP relaxation (4.5 s instead of 5.3 s) and finds a better selection (4069.8 instead of
+4027.7), but branch and bound keeps improving it and stops later (13.1 s instead of 9.8 s). None
+was kept: the dragon stays at 5–6× the paper's time.
+
 ### The dragon's 0-1 program (fourth session, 2026-12-02)
 
 The dragon's first program (21,384 candidates, 19,484 rows after dropping contained ones, one
