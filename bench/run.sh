@@ -176,10 +176,10 @@ done
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached, now guided by the exact distance
   to the nearest sink, below) no longer dominates alone. The issue's target, 10× below the
-  paper's time on the layout, is met on rockerarm (23–31× in two bench runs on 2026-12-02
+  paper's time on the layout, is met on rockerarm (23–31× in three bench runs on 2026-12-02
   with the guided searches; the comparison is unfair the other way: our rockerarm has 20K
   faces, the paper's 70K) and on the bunny (12.7–13.9×, 8.5–9.6× on the whole run); fertility
-  is at 9.5–11.3× (6.3–7.7× on the whole run), on either side of it with this machine's
+  is at 9.5–11.3× (5.9–7.7× on the whole run), on either side of it with this machine's
   speed; the dragon is not (5.0–6.0×: its first 0-1 program takes 8.5–10 s, below; it was
   1.0× before that program stopped once its best solution stalled). Before the searches were guided (six bench runs on 2026-12-02):
   bunny 6.6–9.1×, fertility 5.9–7.7×, rockerarm 16–19.5×. Times vary by 10–40% from run to run on this machine (a shared virtual
