@@ -16,11 +16,11 @@ namespace fcql {
 /// in the bucket of the highest bit in which its key differs from the last key popped. Pushes
 /// are O(1) and each entry moves down at most 32 times, without the branchy sift-downs of a
 /// comparison heap. Among equal keys the order is fixed (last in, first out), so results do
-/// not depend on timing. Pushed with push(), a node is in the heap at most once: a shorter
-/// distance found for it moves its entry (decrease), found through the position kept per node,
-/// instead of adding a second one that would be popped stale later (half of all pops in the
-/// searches from the ports). pushUntracked() leaves that bookkeeping to the caller, who skips
-/// stale entries when they are popped (cheaper where positions would be written far apart).
+/// not depend on timing. A node is in the heap at most once: a shorter distance found for it
+/// moves its entry (decrease), found through the position kept per node, instead of adding a
+/// second one that would be popped stale later (half of all pops, in graph G's searches).
+/// The positions live in the heap (resize()) or beside the caller's own data of each node
+/// (keepPositionsAt()), one of which must come before the first push.
 class RadixHeap {
 public:
   using Entry = std::pair<float, int>;
@@ -34,24 +34,31 @@ public:
     place({keyOf(e.first), e.second});
     ++size_;
   }
-  /// Adds an entry without noting where it went (for searches that never call decrease()
-  /// and keep a stale entry instead, skipped when popped).
-  void pushUntracked(Entry e) {
-    buckets_[bucketOf(keyOf(e.first))].push_back({keyOf(e.first), e.second});
-    ++size_;
-  }
   /// Lowers the key of `node`, in the heap with key `old`, to `e.first`.
   void decrease(float old, Entry e) {
     auto& b = buckets_[bucketOf(keyOf(old))];
-    const int at = position_[e.second];
+    const int at = position(e.second);
     b[at] = b.back();
-    if (b[at].node >= 0) position_[b[at].node] = at;
+    if (b[at].node >= 0) position(b[at].node) = at;
     b.pop_back();
     --size_;
     push(e);
   }
-  /// Room for the positions of nodes 0 .. nodes − 1 (terminals, negative, are never moved).
-  void resize(std::size_t nodes) { position_.resize(nodes); }
+  /// Room in the heap for the positions of nodes 0 .. nodes − 1 (terminals, negative, are
+  /// never moved).
+  void resize(std::size_t nodes) {
+    position_.resize(nodes);
+    positionBase_ = position_.data();
+    positionStride_ = 1;
+  }
+  /// Keeps node n's position at base[n · stride] instead: beside data of the node's that the
+  /// caller touches just before pushing or moving it, so that noting the position costs no
+  /// cache miss of its own.
+  void keepPositionsAt(int* base, std::size_t stride) {
+    position_.clear();
+    positionBase_ = base;
+    positionStride_ = stride;
+  }
   /// Removes and returns an entry with the smallest key. Requires !empty().
   Entry pop() {
     if (buckets_[0].empty()) {
@@ -60,11 +67,7 @@ public:
       std::uint32_t smallest = buckets_[i][0].key;
       for (const Item& it : buckets_[i]) smallest = std::min(smallest, it.key);
       last_ = smallest;
-      if (position_.empty()) {
-        for (const Item& it : buckets_[i]) buckets_[bucketOf(it.key)].push_back(it);
-      } else {
-        for (const Item& it : buckets_[i]) place(it);
-      }
+      for (const Item& it : buckets_[i]) place(it);
       buckets_[i].clear();
     }
     Item it = buckets_[0].back();
@@ -86,15 +89,18 @@ private:
     return k;
   }
   int bucketOf(std::uint32_t key) const { return key == last_ ? 0 : 32 - __builtin_clz(key ^ last_); }
+  int& position(int node) { return positionBase_[std::size_t(node) * positionStride_]; }
   /// Appends the item to its bucket, noting where a node went.
   void place(const Item& it) {
     auto& b = buckets_[bucketOf(it.key)];
-    if (it.node >= 0) position_[it.node] = int(b.size());
+    if (it.node >= 0) position(it.node) = int(b.size());
     b.push_back(it);
   }
 
   std::array<std::vector<Item>, 33> buckets_;
   std::vector<int> position_;  ///< per node: its index in its bucket while in the heap
+  int* positionBase_ = nullptr;
+  std::size_t positionStride_ = 1;
   std::size_t size_ = 0;
   std::uint32_t last_ = 0;
 };

@@ -4,9 +4,11 @@
 #include "tracing/radix_heap.h"
 
 #include <atomic>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <random>
+#include <type_traits>
 
 namespace fcql {
 namespace {
@@ -35,9 +37,10 @@ public:
     for (int u = 0; u < n_; ++u)
       for (std::uint32_t i = begin[u]; i < begin[u + 1]; ++i)
         if (arcs[i].target >= 0) in_[fill[arcs[i].target]++] = {u, arcs[i].weight};
-    dist_.reset(new std::atomic<float>[std::size_t(n_) * T_]);
+    dist_.reset(new Slot[std::size_t(n_) * T_]);
     for (std::size_t i = 0; i < std::size_t(n_) * T_; ++i)
-      dist_[i].store(std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
+      dist_[i].dist.store(std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
+    for (int t = 0; t < T_; ++t) heaps_[t].keepPositionsAt(&dist_[t].position, T_ * sizeof(Slot) / sizeof(int));
   }
 
   int searches() const { return T_; }
@@ -49,26 +52,28 @@ public:
       std::atomic<float>& d = distance(targets_[i], t);
       if (d.load(std::memory_order_relaxed) == 0) continue;
       d.store(0, std::memory_order_relaxed);
-      heaps_[t].pushUntracked({0.0f, targets_[i]});
+      heaps_[t].push({0.0f, targets_[i]});
     }
   }
 
-  /// Search t pops one entry and, unless it is stale or another search holds its node, relaxes
+  /// Search t pops one entry and, unless another search holds its node, relaxes
   /// the arcs into it. False once search t is done.
   bool step(int t) {
     RadixHeap& heap = heaps_[t];
     if (heap.empty()) return false;
     const auto [d, v] = heap.pop();
-    if (d > distance(v, t).load(std::memory_order_relaxed) || heldElsewhere(v, t, d)) return true;
+    if (heldElsewhere(v, t, d)) return true;
     const std::uint32_t first = inBegin_[v], last = inBegin_[v + 1];
     for (std::uint32_t i = first; i < last; ++i) __builtin_prefetch(&distance(in_[i].target, 0));
     for (std::uint32_t i = first; i < last; ++i) {
       const int u = in_[i].target;
       const float nd = d + in_[i].weight;
       std::atomic<float>& du = distance(u, t);
-      if (nd < du.load(std::memory_order_relaxed) && !heldElsewhere(u, t, nd)) {
+      const float old = du.load(std::memory_order_relaxed);
+      if (nd < old && !heldElsewhere(u, t, nd)) {
         du.store(nd, std::memory_order_relaxed);
-        heap.pushUntracked({nd, u});
+        if (std::isinf(old)) heap.push({nd, u});
+        else heap.decrease(old, {nd, u});
         __builtin_prefetch(&inBegin_[u]);
       }
     }
@@ -80,14 +85,14 @@ public:
     std::vector<float> out(n_);
     for (int v = 0; v < n_; ++v) {
       float best = std::numeric_limits<float>::infinity();
-      for (int t = 0; t < T_; ++t) best = std::min(best, dist_[std::size_t(v) * T_ + t].load(std::memory_order_relaxed));
+      for (int t = 0; t < T_; ++t) best = std::min(best, dist_[std::size_t(v) * T_ + t].dist.load(std::memory_order_relaxed));
       out[v] = best;
     }
     return out;
   }
 
 private:
-  std::atomic<float>& distance(int v, int t) const { return dist_[std::size_t(v) * T_ + t]; }
+  std::atomic<float>& distance(int v, int t) const { return dist_[std::size_t(v) * T_ + t].dist; }
 
   /// Whether another search holds distance d or less at node v (d itself, if it comes first).
   bool heldElsewhere(int v, int t, float d) const {
@@ -102,7 +107,15 @@ private:
   const std::vector<int>& targets_;
   std::vector<std::uint32_t> inBegin_;
   std::vector<WeightedArc> in_;
-  std::unique_ptr<std::atomic<float>[]> dist_;
+  /// Search t's distance at a node, and the node's position in search t's heap beside it
+  /// (the heap notes it just after the distance is written: no cache miss of its own).
+  struct Slot {
+    std::atomic<float> dist;
+    int position;
+  };
+  static_assert(std::is_standard_layout<Slot>::value && sizeof(Slot) % sizeof(int) == 0,
+                "the heaps address positions as ints, a whole number of them per slot");
+  std::unique_ptr<Slot[]> dist_;
   std::vector<RadixHeap> heaps_;
 };
 
