@@ -430,7 +430,9 @@ after, `fcql run` alternating in one session (*layout* as in the table above):
 The dragon's time is its 0-1 program (about 10 s, unchanged). The 446K-face bunny (`fcql
 layout`, α 15, k 30): tracing 66.4 → 17.7 s, graph 11.1 → 21.1 s (h: 10 s, on a graph of 24M
 nodes and 104M arcs), the whole command 104 → 66 s; peak memory 2.73 → 2.87 GB; 89 of its 90
-separatrices are the same, one other path ties.
+separatrices are the same, one other path ties. With the later changes below, the command takes
+55–67 s (the machine's speed varies by 20% from hour to hour) and peaks at 3.08 GB, during h:
+its two searches keep a distance and a heap position per node each (16 bytes a node).
 
 After a review: graphs that only t-junction searches use (the patch closing's, rebuilt per
 virtual vertex) skip h; at most 4 searches share h (each node keeps a distance per search); a
