@@ -439,8 +439,9 @@ virtual vertex) skip h; at most 4 searches share h (each node keeps a distance p
 test runs the searches interleaved in drawn orders on graphs full of exact ties. Graph G's
 arcs are now counted in a first pass and written in place in a second (each node's arcs come
 from one face, so no node is shared between threads), instead of being buffered per thread
-(12 bytes per arc) and copied: fertility's `fcql trace` peaks at 252 MB instead of 302 MB, in
-the same time (graph stage 0.66 against 0.67 s over four alternating runs).
+(12 bytes per arc) and copied: fertility's `fcql trace` peaked at 252 MB instead of 302 MB, in
+the same time (graph stage 0.66 against 0.67 s over four alternating runs); since h's heap
+positions are kept beside its distances (above), h is where the peak is, at 301 MB.
 
 The dragon's first 0-1 program, tried again (its largest part written out as an LP file and
 solved by lp_solve alone, with the 3 s stall): the exact neighbourhood-weight rule (a candidate
