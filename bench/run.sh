@@ -176,7 +176,7 @@ done
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached, now guided by the exact distance
   to the nearest sink, below) no longer dominates alone. The issue's target, 10× below the
-  paper's time on the layout, is met on rockerarm (23–31× in three bench runs on 2026-12-02
+  paper's time on the layout, is met on rockerarm (22.9–30.7× in four bench runs on 2026-12-02
   with the guided searches; the comparison is unfair the other way: our rockerarm has 20K
   faces, the paper's 70K) and on the bunny (12.7–13.9×, 8.5–9.6× on the whole run); fertility
   is at 9.5–11.3× (5.9–7.7× on the whole run), on either side of it with this machine's
