@@ -1,6 +1,7 @@
 #include "metrics/quad_quality.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -30,6 +31,14 @@ double angleToCross(const SurfaceMesh& surface, const CrossField& field, int f, 
   return std::min(a, kPi / 2 - a);
 }
 
+/// The two directions of quad q: the vectors joining the midpoints of its opposite edges
+/// (doubled, which changes no angle).
+std::array<Vec3, 2> quadDirections(const QuadMesh& quads, int q) {
+  const auto& P = quads.positions;
+  const auto& f = quads.quads[q];
+  return {(P[f[1]] + P[f[2]]) - (P[f[0]] + P[f[3]]), (P[f[2]] + P[f[3]]) - (P[f[0]] + P[f[1]])};
+}
+
 /// Percentage of the faces of `surface` misaligned as the paper's Table 2 counts them (see
 /// the header).
 double misalignedFacesPercent(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
@@ -41,15 +50,12 @@ double misalignedFacesPercent(const QuadMesh& quads, const SurfaceMesh& surface,
     triangles.push_back({q[0], q[2], q[3]});
   }
   const ClosestPointIndex quadIndex(quads.positions, std::move(triangles));
-  const auto& P = quads.positions;
   int misaligned = 0, measured = 0;
   for (int f = 0; f < surface.numFaces(); ++f) {
     const ClosestPoint cp = quadIndex.closest(surface.faceCentroid(f));
     if (cp.triangle < 0) continue;
-    const auto& q = quads.quads[cp.triangle / 2];
-    const Vec3 directions[2] = {(P[q[1]] + P[q[2]]) - (P[q[0]] + P[q[3]]), (P[q[2]] + P[q[3]]) - (P[q[0]] + P[q[1]])};
     double s = 0, c = 0;
-    for (const Vec3& d : directions) {
+    for (const Vec3& d : quadDirections(quads, cp.triangle / 2)) {
       double a;
       if (angleFromField(surface, field, f, d, a)) s += std::sin(4 * a), c += std::cos(4 * a);
     }
@@ -154,10 +160,9 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
     const auto& f = quads.quads[q];
     const Vec3 centre = (P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4;
     const ClosestPoint cp = surfaceIndex.closest(centre);
-    const Vec3 d1 = (P[f[1]] + P[f[2]]) - (P[f[0]] + P[f[3]]);
-    const Vec3 d2 = (P[f[2]] + P[f[3]]) - (P[f[0]] + P[f[1]]);
-    const double angle = std::max(angleToCross(surface, field, cp.triangle, d1),
-                                  angleToCross(surface, field, cp.triangle, d2));
+    const std::array<Vec3, 2> d = quadDirections(quads, q);
+    const double angle = std::max(angleToCross(surface, field, cp.triangle, d[0]),
+                                  angleToCross(surface, field, cp.triangle, d[1]));
     sumAngle += angle;
     if (angle > thresholdRad) ++misaligned;
     const double j = scaledJacobian(quads, q);

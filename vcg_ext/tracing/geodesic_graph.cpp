@@ -368,7 +368,7 @@ GeodesicGraph::ArcFrame GeodesicGraph::arcFrame(int from, int to) const {
   const int e = sampling_.sampleEdge[nodeSample(to)];
   if (isBorderTerminal(to)) return {sampling_.edgeFace[e][0], nodeDirection(to)};
   // The target continues into the face across its edge, its direction carried there.
-  const int side = sampling_.edgeFace[e][0] == nodeFace(to) ? 1 : 0;
+  const int side = 1 - nodeSide(to);
   const int face = sampling_.edgeFace[e][side];
   return {face, mod4(nodeDirection(to) - analysis_->matching[face][sampling_.edgeLocal[e][side]])};
 }
