@@ -113,6 +113,28 @@ TEST(SinkDistance, SearchesOvertakingEachOtherInAnyOrderGiveTheExactDistances) {
   EXPECT_GT(ties, 100) << "too few zero-weight arcs on shortest paths to exercise ties";
 }
 
+TEST(SinkDistance, AnArcWithoutALengthLeadsNowhere) {
+  // A NaN weight (a broken move) must not become a free way to a target: the distances are
+  // those of the graph without that arc.
+  std::mt19937 rng(5);
+  Csr g = randomGraph(2000, rng);
+  Csr without = g;
+  long broken = 0;
+  for (std::size_t i = 0; i < g.arcs.size(); i += 7)
+    if (g.arcs[i].target >= 0) {
+      g.arcs[i].weight = std::numeric_limits<float>::quiet_NaN();
+      without.arcs[i].target = ~without.arcs[i].target;
+      ++broken;
+    }
+  ASSERT_GT(broken, 100);
+  const std::vector<int> targets = {5, 700, 1500};
+  const std::vector<float> want = reference(without, targets);
+  for (int threads : {1, 2}) {
+    const std::vector<float> got = distancesToNearestTarget(g.begin, g.arcs, targets, threads);
+    for (std::size_t v = 0; v < want.size(); ++v) ASSERT_EQ(got[v], want[v]) << "node " << v << " on " << threads << " threads";
+  }
+}
+
 TEST(SinkDistance, NoTargetsLeaveEveryNodeUnreachable) {
   std::mt19937 rng(3);
   const Csr g = randomGraph(200, rng);
