@@ -1,6 +1,6 @@
 #include "layout/integer_program.h"
 
-#include <lpsolve/lp_lib.h>
+#include "layout/lp_solve_support.h"
 
 #include <algorithm>
 #include <chrono>
@@ -39,8 +39,6 @@ const char* toString(IntegerProgram::Status status) {
   }
 }
 
-using LpModel = std::unique_ptr<lprec, void (*)(lprec*)>;
-
 namespace {
 
 constexpr double kMinRelaxationSeconds = 60;
@@ -51,33 +49,6 @@ IntegerProgram::Result emptyProgramResult() {
   result.status = IntegerProgram::Status::Optimal;
   result.message = "empty program";
   return result;
-}
-
-/// lp_solve may "solve" an unbounded model to its infinity (1e30).
-bool objectiveAtInfinity(lprec* lp) { return std::abs(get_objective(lp)) >= 0.1 * get_infinite(lp); }
-
-/// What branch and bound has found so far, for the stall limit: lp_solve reports each
-/// improved solution (a message callback) and asks often whether to stop (an abort callback).
-struct StallWatch {
-  double limitSeconds = 0;
-  bool haveSolution = false;
-  bool stopped = false;
-  std::chrono::steady_clock::time_point lastImprovement;
-};
-
-void __WINAPI noteImprovement(lprec*, void* handle, int) {
-  auto* watch = static_cast<StallWatch*>(handle);
-  watch->haveSolution = true;
-  watch->lastImprovement = std::chrono::steady_clock::now();
-}
-
-int __WINAPI stallReached(lprec*, void* handle) {
-  auto* watch = static_cast<StallWatch*>(handle);
-  if (!watch->haveSolution) return FALSE;
-  const double idle = std::chrono::duration<double>(std::chrono::steady_clock::now() - watch->lastImprovement).count();
-  if (idle < watch->limitSeconds) return FALSE;
-  watch->stopped = true;
-  return TRUE;
 }
 
 }  // namespace
@@ -136,11 +107,8 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
   set_mip_gap(lp.get(), FALSE, relativeGap_);
   StallWatch watch;
-  if (stallSeconds_ > 0) {
-    watch.limitSeconds = stallSeconds_;
-    put_msgfunc(lp.get(), noteImprovement, &watch, MSG_MILPFEASIBLE | MSG_MILPBETTER);
-    put_abortfunc(lp.get(), stallReached, &watch);
-  }
+  watch.limitSeconds = stallSeconds_;
+  watchForStall(lp.get(), watch);
   int ret = ::solve(lp.get());
   if (watch.stopped && (ret == SUBOPTIMAL || ret == USERABORT) && get_solutioncount(lp.get()) > 0) {
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,6 +1,7 @@
 #include "layout/separatrix_selection.h"
 
 #include "layout/independent_set_reduction.h"
+#include "layout/set_packing.h"
 #include "mesh/union_find.h"
 #include "mesh/worker_threads.h"
 
@@ -247,22 +248,20 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     }
     std::vector<char> greedyTaken(n, 0);
     double greedyObjective = greedy(vars, greedyTaken);
-    IntegerProgram ip;
-    ip.setMaximize(true);
-    ip.setRelativeGap(1e-3);  // within 0.1% of the optimum of Eq. 4
-    ip.setStallLimit(stallSeconds);
     std::vector<int> local(n, -1);
-    for (int v : vars) local[v] = ip.addBinary(weight[v]);
+    std::vector<double> localWeight;
+    for (int v : vars) local[v] = int(localWeight.size()), localWeight.push_back(weight[v]);
+    std::vector<std::vector<int>> localRows;
     for (int r : rowsOf[root]) {
-      std::vector<std::pair<int, double>> terms;
-      for (int v : rows[r]) terms.push_back({local[v], 1.0});
-      ip.addConstraint(terms, IntegerProgram::Sense::LessEqual, 1.0);
+      localRows.emplace_back();
+      for (int v : rows[r]) localRows.back().push_back(local[v]);
     }
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    double budget = std::max(1.0, timeLimitSeconds - elapsed);
-    IntegerProgram::Result r = ip.solve(budget);
-    if (r.status == IntegerProgram::Status::Infeasible || r.status == IntegerProgram::Status::Unbounded)
-      throw std::runtime_error("separatrix selection: " + r.message);  // impossible for this model: a bug
+    SetPackingOptions options;
+    options.relativeGap = 1e-3;  // within 0.1% of the optimum of Eq. 4
+    options.stallSeconds = stallSeconds;
+    options.timeLimitSeconds =
+        std::max(1.0, timeLimitSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const SetPackingResult r = solveSetPacking(localWeight, localRows, options);
     ++programs;
     if (r.status == IntegerProgram::Status::TimeLimit || !r.hasSolution()) ++timedOut;
     if (r.status == IntegerProgram::Status::Stalled) ++stalled;
@@ -270,7 +269,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
       ++usedGreedy;
       for (int v : vars) chosen[v] = greedyTaken[v];
     } else {
-      for (int v : vars) chosen[v] = r.values[local[v]] > 0.5;
+      for (int v : vars) chosen[v] = r.chosen[local[v]];
     }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

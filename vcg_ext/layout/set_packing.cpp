@@ -1,0 +1,368 @@
+#include "layout/set_packing.h"
+
+#include "layout/lp_solve_support.h"
+#include "mesh/union_find.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numeric>
+#include <stdexcept>
+
+namespace fcql {
+namespace {
+
+constexpr double kViolation = 1e-7;  // a row summing to more than 1 + this is violated
+constexpr double kIntegral = 1e-6;   // a relaxed value this close to 0 or 1 is taken as such
+
+using Clock = std::chrono::steady_clock;
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g%%", 100 * fraction);
+  return text;
+}
+
+void validate(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows) {
+  const int n = int(weight.size());
+  for (double w : weight)
+    if (!(w > 0) || !std::isfinite(w)) throw std::invalid_argument("set packing: weights must be positive and finite");
+  std::vector<int> seenInRow(n, -1);
+  for (int r = 0; r < int(rows.size()); ++r)
+    for (int j : rows[r]) {
+      if (j < 0 || j >= n) throw std::invalid_argument("set packing: a row names an unknown variable");
+      if (seenInRow[j] == r) throw std::invalid_argument("set packing: a row names a variable twice");
+      seenInRow[j] = r;
+    }
+}
+
+/// The LP relaxation, its rows added as they are violated (step 1).
+class LazyRelaxation {
+public:
+  LazyRelaxation(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows)
+      : rows_(rows), inModel_(rows.size(), 0), lp_(make_lp(0, int(weight.size())), delete_lp) {
+    const int n = int(weight.size());
+    if (!lp_) return;
+    set_verbose(lp_.get(), NEUTRAL);
+    std::vector<int> cols(n);
+    std::iota(cols.begin(), cols.end(), 1);
+    set_obj_fnex(lp_.get(), n, const_cast<double*>(weight.data()), cols.data());
+    set_maxim(lp_.get());
+    for (int j = 1; j <= n; ++j) set_bounds(lp_.get(), j, 0, 1);
+    x_.assign(n, 0);
+    lastRound_.assign(n, -1);
+  }
+
+  lprec* model() { return lp_.get(); }
+  const std::vector<double>& values() const { return x_; }
+  int rounds() const { return rounds_; }
+  int rowsInModel() const { return rowsInModel_; }
+
+  /// Solves until no row is violated; false with `message` set if lp_solve fails.
+  bool solve(const std::function<double()>& secondsLeft, std::string& message) {
+    if (!lp_) {
+      message = "lp_solve could not create the model (out of memory?)";
+      return false;
+    }
+    for (;;) {
+      set_timeout(lp_.get(), std::max(1L, long(std::ceil(secondsLeft()))));
+      const int ret = ::solve(lp_.get());  // after the first round, from the last basis
+      if (ret != OPTIMAL && ret != PRESOLVED) {
+        message = ret == TIMEOUT ? "lp_solve reached the time limit on the LP relaxation"
+                                 : "lp_solve failed on the LP relaxation (code " + std::to_string(ret) + ")";
+        return false;
+      }
+      get_variables(lp_.get(), x_.data());
+      ++rounds_;
+      if (!addViolatedRows()) return true;
+      if (secondsLeft() <= 0) {
+        message = "time limit reached on the LP relaxation (" + std::to_string(rounds_) + " rounds of rows)";
+        return false;
+      }
+    }
+  }
+
+  /// The whole program with every row, as a 0-1 program, starting from the relaxation's
+  /// optimal basis (the rows it did without enter with their slacks basic, which keeps the
+  /// basis optimal). Built anew in row-entry mode: adding the rest of the rows to the
+  /// relaxation's model one by one costs lp_solve 0.9 s on the dragon. Null with `message`
+  /// set if lp_solve fails.
+  LpModel wholeProgram(const std::vector<double>& weight, std::string& message) const {
+    const int n = int(weight.size()), m = int(rows_.size());
+    LpModel lp(make_lp(0, n), delete_lp);
+    if (!lp) {
+      message = "lp_solve could not create the model (out of memory?)";
+      return lp;
+    }
+    set_verbose(lp.get(), NEUTRAL);
+    std::vector<int> cols(n);
+    std::iota(cols.begin(), cols.end(), 1);
+    set_obj_fnex(lp.get(), n, const_cast<double*>(weight.data()), cols.data());
+    set_maxim(lp.get());
+    set_add_rowmode(lp.get(), TRUE);
+    std::vector<double> ones;
+    for (const auto& row : rows_) {
+      cols.clear();
+      for (int j : row) cols.push_back(j + 1);
+      ones.assign(cols.size(), 1.0);
+      add_constraintex(lp.get(), int(cols.size()), ones.data(), cols.data(), LE, 1);
+    }
+    set_add_rowmode(lp.get(), FALSE);
+    for (int j = 1; j <= n; ++j) {
+      set_bounds(lp.get(), j, 0, 1);
+      set_int(lp.get(), j, TRUE);
+    }
+    // lp_solve numbers a model's variables rows first (1..rows), then columns; a basis lists
+    // the basic ones and then the nonbasic ones, negative when at their lower bound.
+    const int k = rowsInModel_;
+    std::vector<int> from(1 + k + n), to(1 + m + n);
+    if (get_basis(lp_.get(), from.data(), TRUE)) {
+      auto map = [&](int v) {
+        const int a = std::abs(v);
+        const int mapped = a <= k ? modelRows_[a - 1] + 1 : m + (a - k);
+        return v < 0 ? -mapped : mapped;
+      };
+      int at = 1;
+      for (int i = 1; i <= k; ++i) to[at++] = map(from[i]);
+      for (int r = 0; r < m; ++r)
+        if (!inModel_[r]) to[at++] = r + 1;
+      for (int i = k + 1; i <= k + n; ++i) to[at++] = map(from[i]);
+      set_basis(lp.get(), to.data(), TRUE);  // if refused, lp_solve starts from its own basis
+    }
+    return lp;
+  }
+
+private:
+  void addRow(int r) {
+    cols_.clear();
+    for (int j : rows_[r]) cols_.push_back(j + 1);
+    ones_.assign(cols_.size(), 1.0);
+    add_constraintex(lp_.get(), int(cols_.size()), ones_.data(), cols_.data(), LE, 1);
+    inModel_[r] = 1;
+    modelRows_.push_back(r);
+    ++rowsInModel_;
+  }
+
+  /// The most violated rows first, none sharing a positive variable with one added before it
+  /// in this round (the next solve would settle both with one change). False if none is
+  /// violated.
+  bool addViolatedRows() {
+    violated_.clear();
+    for (int r = 0; r < int(rows_.size()); ++r) {
+      if (inModel_[r]) continue;
+      double sum = 0;
+      for (int j : rows_[r]) sum += x_[j];
+      if (sum > 1 + kViolation) violated_.push_back({sum, r});
+    }
+    if (violated_.empty()) return false;
+    std::sort(violated_.begin(), violated_.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    for (const auto& v : violated_) {
+      const auto& row = rows_[v.second];
+      bool clash = false;
+      for (int j : row) clash = clash || (x_[j] > kIntegral && lastRound_[j] == rounds_);
+      if (clash) continue;
+      for (int j : row)
+        if (x_[j] > kIntegral) lastRound_[j] = rounds_;
+      addRow(v.second);
+    }
+    return true;
+  }
+
+  const std::vector<std::vector<int>>& rows_;
+  std::vector<char> inModel_;
+  std::vector<int> modelRows_;  // the rows in the model, in the order they were added
+  LpModel lp_;
+  std::vector<double> x_;
+  std::vector<int> lastRound_;  // the round in which a row holding the variable was added
+  std::vector<std::pair<double, int>> violated_;
+  std::vector<int> cols_;
+  std::vector<double> ones_;
+  int rounds_ = 0, rowsInModel_ = 0;
+};
+
+}  // namespace
+
+SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows,
+                                 const SetPackingOptions& options) {
+  validate(weight, rows);
+  const int n = int(weight.size());
+  SetPackingResult result;
+  if (n == 0) {
+    result.status = IntegerProgram::Status::Optimal;
+    result.message = "empty program";
+    return result;
+  }
+  const auto start = Clock::now();
+  const std::function<double()> secondsLeft = [&] {
+    return options.timeLimitSeconds - std::chrono::duration<double>(Clock::now() - start).count();
+  };
+
+  // Step 1: the LP relaxation.
+  LazyRelaxation relaxation(weight, rows);
+  if (!relaxation.solve(secondsLeft, result.message)) return result;
+  result.relaxationRounds = relaxation.rounds();
+  result.rowsInRelaxation = relaxation.rowsInModel();
+  result.bound = get_objective(relaxation.model());
+  const std::vector<double>& x = relaxation.values();
+
+  // Step 2: relax and fix. 1 taken, 0 left out, 2 fractional.
+  std::vector<char> state(n);
+  for (int j = 0; j < n; ++j) state[j] = x[j] >= 1 - kIntegral ? 1 : (x[j] <= kIntegral ? 0 : 2);
+  // A row holding a variable at 1 holds the others at 0 up to rounding noise: they stay out.
+  for (const auto& row : rows) {
+    int taken = -1;
+    for (int j : row)
+      if (state[j] == 1) {
+        if (taken >= 0) state[j] = 0;  // cannot happen within lp_solve's tolerances
+        else taken = j;
+      }
+    if (taken >= 0)
+      for (int j : row)
+        if (state[j] == 2) state[j] = 0;
+  }
+  UnionFind parts(n);
+  for (const auto& row : rows) {
+    int first = -1;
+    for (int j : row) {
+      if (state[j] != 2) continue;
+      if (first < 0) first = j;
+      else parts.unite(first, j);
+    }
+  }
+  std::vector<std::vector<int>> members(n), rowsOfPart(n);
+  for (int j = 0; j < n; ++j)
+    if (state[j] == 2) members[parts.find(j)].push_back(j), ++result.fractional;
+  for (int r = 0; r < int(rows.size()); ++r) {
+    int fractional = 0, any = -1;
+    for (int j : rows[r])
+      if (state[j] == 2) ++fractional, any = j;
+    if (fractional >= 2) rowsOfPart[parts.find(any)].push_back(r);
+  }
+  std::vector<char>& chosen = result.chosen;
+  chosen.assign(n, 0);
+  for (int j = 0; j < n; ++j) chosen[j] = state[j] == 1;
+  std::vector<int> local(n, -1);
+  for (int root = 0; root < n; ++root) {
+    const auto& part = members[root];
+    if (part.empty()) continue;
+    ++result.fractionalParts;
+    if (part.size() == 1) {
+      chosen[part[0]] = 1;
+      continue;
+    }
+    IntegerProgram ip;
+    ip.setMaximize(true);
+    ip.setRelativeGap(options.relativeGap);
+    ip.setStallLimit(options.stallSeconds);
+    for (int j : part) local[j] = ip.addBinary(weight[j]);
+    for (int r : rowsOfPart[root]) {
+      std::vector<std::pair<int, double>> terms;
+      for (int j : rows[r])
+        if (state[j] == 2) terms.push_back({local[j], 1.0});
+      ip.addConstraint(terms, IntegerProgram::Sense::LessEqual, 1.0);
+    }
+    const IntegerProgram::Result r = ip.solve(std::max(1.0, secondsLeft()));
+    if (r.hasSolution())
+      for (int j : part) chosen[j] = r.values[local[j]] > 0.5;
+    // else the part stays out: the completion below takes what it can
+  }
+  // Completion: variables no chosen one conflicts with are taken, heaviest first.
+  std::vector<std::vector<int>> rowsOf(n);
+  std::vector<int> rowTaken(rows.size(), 0);
+  for (int r = 0; r < int(rows.size()); ++r)
+    for (int j : rows[r]) {
+      rowsOf[j].push_back(r);
+      rowTaken[r] += chosen[j];
+    }
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight[a] > weight[b]; });
+  for (int j : order) {
+    if (chosen[j]) continue;
+    bool free = true;
+    for (int r : rowsOf[j]) free = free && rowTaken[r] == 0;
+    if (!free) continue;
+    chosen[j] = 1;
+    for (int r : rowsOf[j]) ++rowTaken[r];
+  }
+  for (int j = 0; j < n; ++j) result.objective += chosen[j] ? weight[j] : 0;
+
+  const double gapAllowed = options.relativeGap * std::max(1.0, std::abs(result.bound));
+  if (result.bound - result.objective <= gapAllowed) {
+    result.status = IntegerProgram::Status::Optimal;
+    result.message = result.fractional == 0
+                         ? "the LP relaxation is integral"
+                         : "the relaxation fixed where integral and its fractional rest solved by parts: within " +
+                               percent(options.relativeGap) + " of the LP bound";
+    return result;
+  }
+
+  // Step 3: branch and bound on the whole, for a better selection than step 2's.
+  result.branchAndBound = true;
+  std::string failure;
+  LpModel whole = relaxation.wholeProgram(weight, failure);
+  if (!whole) {
+    result.status = IntegerProgram::Status::TimeLimit;
+    result.message = "the relaxation fixed by parts, not improved: " + failure;
+    return result;
+  }
+  lprec* lp = whole.get();
+  set_mip_gap(lp, FALSE, options.relativeGap);
+  set_obj_bound(lp, result.objective);  // only better selections are accepted
+  StallWatch watch;
+  watch.limitSeconds = options.stallSeconds;
+  watch.haveSolution = true;  // step 2's
+  watch.lastImprovement = Clock::now();
+  watchForStall(lp, watch);
+  set_timeout(lp, std::max(1L, long(std::ceil(secondsLeft()))));
+  const int ret = ::solve(lp);
+  if (get_solutioncount(lp) > 0 && (ret == OPTIMAL || ret == PRESOLVED || ret == SUBOPTIMAL || ret == TIMEOUT ||
+                                    ret == USERABORT)) {
+    std::vector<double> values(n);
+    get_variables(lp, values.data());
+    std::vector<char> better(n);
+    double objective = 0;
+    for (int j = 0; j < n; ++j) {
+      better[j] = values[j] > 0.5;
+      objective += better[j] ? weight[j] : 0;
+    }
+    bool feasible = true;
+    for (const auto& row : rows) {
+      int taken = 0;
+      for (int j : row) taken += better[j];
+      feasible = feasible && taken <= 1;
+    }
+    if (feasible && objective > result.objective + 1e-9 * std::max(1.0, std::abs(result.objective))) {
+      chosen = better;
+      result.objective = objective;
+      result.improvedByBranchAndBound = true;
+    }
+  }
+  const std::string what = result.improvedByBranchAndBound ? "branch and bound improved the relaxation fixed by parts"
+                                                           : "the relaxation fixed by parts";
+  if (ret == OPTIMAL || ret == PRESOLVED || ret == INFEASIBLE) {  // INFEASIBLE: nothing better exists
+    result.status = IntegerProgram::Status::Optimal;
+    result.message = what + ": proven within " + percent(options.relativeGap) + " of the optimum by branch and bound";
+  } else if (watch.stopped) {
+    result.status = IntegerProgram::Status::Stalled;
+    char stall[32];
+    std::snprintf(stall, sizeof stall, "%g", options.stallSeconds);
+    result.message = what + ", " + percent((result.bound - result.objective) / std::max(1.0, std::abs(result.bound))) +
+                     " below the LP bound; branch and bound found nothing better for " + stall +
+                     " s (not proven optimal)";
+  } else {
+    result.status = IntegerProgram::Status::TimeLimit;
+    result.message = what + ", " + percent((result.bound - result.objective) / std::max(1.0, std::abs(result.bound))) +
+                     " below the LP bound; branch and bound stopped (" +
+                     (ret == TIMEOUT || ret == SUBOPTIMAL ? std::string("time limit")
+                                                          : "lp_solve code " + std::to_string(ret)) +
+                     ", not proven optimal)";
+  }
+  return result;
+}
+
+}  // namespace fcql
