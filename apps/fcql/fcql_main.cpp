@@ -19,7 +19,7 @@ const char* kUsage =
     "  trace MESH|--example NAME [field options] [--alpha 20] [--k 10] [--phi 10] [--threads N] --out DIR\n"
     "        build graph G, trace field-coherent separatrices from every port (Dijkstra, k sinks)\n"
     "        and build graph H; writes DIR/candidates.obj, DIR/field.ffield and DIR/stats.json\n"
-    "  layout MESH|--example NAME [field and trace options] [--ilp-time-limit 60] [--ilp-stall 3] --out DIR\n"
+    "  layout MESH|--example NAME [field and trace options] [--ilp-time-limit 60] [--ilp-stall 1] --out DIR\n"
     "        select separatrices (0-1 program, solving cycle, t-junctions, borders), cut the\n"
     "        surface into patches; adds DIR/separatrices.obj and DIR/layout.ply; lp_solve\n"
     "        stops once its best selection has not improved for ilp-stall seconds (0: never)\n"
