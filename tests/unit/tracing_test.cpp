@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <limits>
 #include <numeric>
 #include <queue>
@@ -420,6 +421,44 @@ TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
     checkCoherent(*a, a->h.arcs[i].path);
   }
   EXPECT_EQ(a->h.tangentialPairs, b->h.tangentialPairs);
+  EXPECT_EQ(a->h.tangentialCliques, b->h.tangentialCliques);
+}
+
+TEST(Tracing, TangentialCliquesHoldExactlyTheArcsThatCrossTangentially) {
+  // Graph H's tangential crossings come from cliques of chords per triangle. Checked against
+  // every pair of pieces in every triangle: the pairs are exactly those that cross in a
+  // parallel direction class, and every clique holds only such pairs.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
+  TracingParameters params;
+  params.k = 5;
+  auto t = trace(m, f, params);
+  const auto& arcs = t->h.arcs;
+  ASSERT_GT(arcs.size(), 20u);
+  std::map<int, std::vector<std::pair<int, const PathSegment*>>> perFace;
+  for (int a = 0; a < int(arcs.size()); ++a)
+    for (const auto& s : arcs[a].path.segments)
+      if (s.face >= 0) perFace[s.face].push_back({a, &s});
+  std::set<std::pair<int, int>> expected;
+  for (const auto& face : perFace)
+    for (const auto& p : face.second)
+      for (const auto& q : face.second) {
+        const PathSegment &s = *p.second, &u = *q.second;
+        if (p.first < q.first && (s.direction - u.direction) % 2 == 0 &&
+            relateChords(s.from, s.to, u.from, u.to) != ChordRelation::Disjoint)
+          expected.insert({p.first, q.first});
+      }
+  ASSERT_GT(expected.size(), 50u);
+  const std::vector<std::pair<int, int>> pairs(expected.begin(), expected.end());
+  EXPECT_EQ(t->h.tangentialPairs, pairs);
+  std::set<std::vector<int>> distinct;
+  for (const auto& clique : t->h.tangentialCliques) {
+    ASSERT_GE(clique.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(clique.begin(), clique.end()));
+    EXPECT_TRUE(distinct.insert(clique).second) << "a clique is listed twice";
+    for (std::size_t i = 0; i < clique.size(); ++i)
+      for (std::size_t j = i + 1; j < clique.size(); ++j)
+        EXPECT_TRUE(expected.count({clique[i], clique[j]})) << clique[i] << " and " << clique[j] << " do not cross tangentially";
+  }
 }
 
 namespace {

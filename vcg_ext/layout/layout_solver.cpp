@@ -62,7 +62,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   const int numPorts = int(graph.ports().size());
 
   // 1. The first 0-1 program on all candidates.
-  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, graph.parameters().threads, params.ilpStall);
+  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStall);
   noteSelection(layout, first);
   for (int a : first.selected) {
     const auto& c = candidates.arcs[a];
@@ -104,7 +104,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
-    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, graph.parameters().threads, params.ilpStall);
+    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStall);
     noteSelection(layout, r);
     if (r.selected.empty()) break;
     for (int a : r.selected) {

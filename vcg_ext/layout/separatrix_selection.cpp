@@ -3,129 +3,15 @@
 #include "layout/independent_set_reduction.h"
 #include "layout/set_packing.h"
 #include "mesh/union_find.h"
-#include "mesh/worker_threads.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <set>
 #include <stdexcept>
 
 namespace fcql {
 namespace {
-
-/// A piece of a candidate inside one triangle, as a variable of the program.
-struct Piece {
-  int variable;
-  const PathSegment* segment;
-};
-
-using Cliques = std::set<std::vector<int>>;
-
-/// A chord of a triangle and the variables whose pieces run along it: paths through a face
-/// near a singularity mostly share a few chords (on fertility 51M pairs of pieces, 260K pairs
-/// of distinct chords), and pieces on one chord meet exactly what the chord meets.
-struct ChordGroup {
-  double from, to;
-  std::vector<int> variables;
-};
-
-/// Working memory of addTriangleCliques, reused from triangle to triangle.
-struct CliqueScratch {
-  std::vector<ChordGroup> chords;
-  std::vector<char> meets, covered;  // m × m over the chords
-  std::vector<int> members, vars;
-};
-
-/// Adds the conflict cliques of one triangle's pieces: pieces of the same direction parity
-/// that pairwise meet can hold at most one selected separatrix. A greedy cover of the meeting
-/// chords: each pair that meets and is not covered yet grows into a clique of all chords
-/// meeting its members, and the clique holds every variable on those chords. A chord that
-/// meets no other one still makes a clique of the variables along it.
-void addTriangleCliques(const std::vector<Piece>& pieces, CliqueScratch& w, Cliques& cliques) {
-  for (int parity = 0; parity < 2; ++parity) {
-    w.chords.clear();
-    for (const auto& p : pieces) {
-      if (p.segment->direction % 2 != parity) continue;
-      const double a = std::min(p.segment->from, p.segment->to), b = std::max(p.segment->from, p.segment->to);
-      auto it = std::find_if(w.chords.begin(), w.chords.end(), [&](const ChordGroup& c) { return c.from == a && c.to == b; });
-      if (it == w.chords.end()) it = w.chords.insert(w.chords.end(), ChordGroup{a, b, {}});
-      if (std::find(it->variables.begin(), it->variables.end(), p.variable) == it->variables.end())
-        it->variables.push_back(p.variable);
-    }
-    const int m = int(w.chords.size());
-    if (m == 0) continue;
-    w.meets.assign(std::size_t(m) * m, 0);
-    w.covered.assign(std::size_t(m) * m, 0);
-    auto at = [m](std::vector<char>& x, int i, int j) -> char& { return x[std::size_t(i) * m + j]; };
-    for (int i = 0; i < m; ++i)
-      for (int j = i + 1; j < m; ++j)
-        at(w.meets, i, j) = at(w.meets, j, i) =
-            relateChords(w.chords[i].from, w.chords[i].to, w.chords[j].from, w.chords[j].to) != ChordRelation::Disjoint;
-    auto emit = [&]() {
-      w.vars.clear();
-      for (int c : w.members) w.vars.insert(w.vars.end(), w.chords[c].variables.begin(), w.chords[c].variables.end());
-      std::sort(w.vars.begin(), w.vars.end());
-      w.vars.erase(std::unique(w.vars.begin(), w.vars.end()), w.vars.end());
-      if (w.vars.size() >= 2) cliques.insert(w.vars);
-    };
-    for (int i = 0; i < m; ++i) {
-      bool alone = true;
-      for (int j = 0; j < m && alone; ++j) alone = j == i || !at(w.meets, i, j);
-      if (alone) {
-        w.members = {i};
-        emit();
-        continue;
-      }
-      for (int j = i + 1; j < m; ++j) {
-        if (!at(w.meets, i, j) || at(w.covered, i, j)) continue;
-        w.members = {i, j};
-        for (int k = 0; k < m; ++k) {
-          if (k == i || k == j) continue;
-          bool all = true;
-          for (int c : w.members) all = all && at(w.meets, k, c);
-          if (all) w.members.push_back(k);
-        }
-        for (int a : w.members)
-          for (int b : w.members) at(w.covered, a, b) = 1;
-        emit();
-      }
-    }
-  }
-}
-
-/// Conflict cliques of every triangle. Together they imply every pairwise Eq. 3 and make the
-/// LP relaxation much tighter than the pairs alone. Triangles are shared out in blocks among
-/// the threads, each with its own set: the union does not depend on who found what.
-Cliques conflictCliques(const SeparatrixGraph& h, const std::vector<int>& variableOf, int requestedThreads) {
-  int maxFace = -1;
-  for (const auto& a : h.arcs)
-    for (const auto& s : a.path.segments) maxFace = std::max(maxFace, s.face);
-  std::vector<std::vector<Piece>> perFace(maxFace + 1);
-  for (int i = 0; i < int(h.arcs.size()); ++i) {
-    if (variableOf[i] < 0) continue;
-    for (const auto& s : h.arcs[i].path.segments)
-      if (s.face >= 0) perFace[s.face].push_back({variableOf[i], &s});
-  }
-  const int numFaces = int(perFace.size());
-  const int blockSize = 256;
-  const int numBlocks = (numFaces + blockSize - 1) / blockSize;
-  const int threads = workerThreadCount(requestedThreads, numBlocks);
-  std::vector<Cliques> found(threads);
-  std::atomic<int> nextBlock{0};
-  auto work = [&](int thread) {
-    CliqueScratch scratch;
-    for (int block; (block = nextBlock.fetch_add(1)) < numBlocks;)
-      for (int f = block * blockSize, end = std::min(numFaces, f + blockSize); f < end; ++f)
-        if (perFace[f].size() >= 2) addTriangleCliques(perFace[f], scratch, found[thread]);
-  };
-  runOnWorkerThreads(threads, work);
-  Cliques cliques;
-  for (Cliques& c : found) cliques.merge(c);
-  return cliques;
-}
 
 /// Drops the rows contained in another row: every row says "at most one of these", so a
 /// row inside a larger one adds nothing (cliques of neighbouring triangles often nest; on
@@ -161,7 +47,7 @@ std::vector<std::vector<int>> withoutContainedRows(const std::vector<std::vector
 }  // namespace
 
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
-                                   int threads, double stallSeconds) {
+                                   double stallSeconds) {
   SelectionResult out;
   const auto start = std::chrono::steady_clock::now();  // the program's construction counts too
   auto free = [&](int p) { return portFree.empty() || (p >= 0 && p < int(portFree.size()) && portFree[p]); };
@@ -191,7 +77,12 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     std::sort(row.begin(), row.end());
     if (row.size() > 1) rows.push_back(std::move(row));
   }
-  for (const auto& clique : conflictCliques(h, variableOf, threads)) rows.push_back(clique);
+  for (const auto& clique : h.tangentialCliques) {
+    std::vector<int> row;  // increasing, as variables are numbered in the order of the arcs
+    for (int a : clique)
+      if (variableOf[a] >= 0) row.push_back(variableOf[a]);
+    if (row.size() >= 2) rows.push_back(std::move(row));
+  }
   rows = withoutContainedRows(rows, n);
   out.variables = n;
   // Variables another one dominates are left out (exact: an optimal solution remains).

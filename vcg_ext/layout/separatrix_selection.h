@@ -25,10 +25,9 @@ struct SelectionResult {
 /// `portFree[p]` = 1 if port p may receive a separatrix (empty: all ports). Arcs touching a
 /// port that is not free are left out. Throws std::runtime_error with lp_solve's reason if no
 /// solution could be found (the empty selection is always feasible, so this means a solver
-/// failure). The conflict cliques are found on `threads` threads (0: all hardware threads).
-/// Branch and bound on each part stops once its best solution has not improved for
+/// failure). Its conflict rows are graph H's tangential cliques. Branch and bound on each part stops once its best solution has not improved for
 /// `stallSeconds` (0: never), and all parts together within `timeLimitSeconds`.
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
-                                   int threads = 0, double stallSeconds = 0);
+                                   double stallSeconds = 0);
 
 }  // namespace fcql
