@@ -112,6 +112,39 @@ TEST(SetPacking, MatchesBruteForceOnRandomPrograms) {
   EXPECT_GT(fewerRows, 60) << "the relaxation needs only some of the rows";
 }
 
+TEST(SetPacking, TheRelaxationWithRowsAndVariablesAddedLazilyIsTheWholeRelaxation) {
+  // 1200 variables in rows of 2–6 neighbours (a band, as conflicts are local on a surface):
+  // the relaxation lp_solve solves with only the rows and variables it needs has the optimum
+  // of the relaxation with all of them, and it did need fewer of both.
+  std::mt19937 random(5);
+  const int n = 1200;
+  std::vector<double> weight(n);
+  for (double& w : weight) w = std::uniform_real_distribution<double>(0.2, 3.0)(random);
+  Rows rows;
+  for (int r = 0; r < 1800; ++r) {
+    const int first = std::uniform_int_distribution<int>(0, n - 40)(random);
+    std::vector<int> vars;
+    const int size = std::uniform_int_distribution<int>(2, 6)(random);
+    while (int(vars.size()) < size) {
+      const int j = first + std::uniform_int_distribution<int>(0, 39)(random);
+      if (std::find(vars.begin(), vars.end(), j) == vars.end()) vars.push_back(j);
+    }
+    std::sort(vars.begin(), vars.end());
+    rows.push_back(vars);
+  }
+  SetPackingOptions options;
+  options.stallSeconds = 0.3;
+  const SetPackingResult r = solveSetPacking(weight, rows, options);
+  ASSERT_TRUE(r.hasSolution()) << r.message;
+  EXPECT_NEAR(r.bound, relaxationOptimum(rows, weight), 1e-6);
+  EXPECT_LT(r.rowsInRelaxation, int(rows.size()));
+  EXPECT_LT(r.columnsInRelaxation, n);
+  EXPECT_GT(r.relaxationRounds, 3);
+  EXPECT_TRUE(feasible(rows, r.chosen));
+  EXPECT_LE(r.objective, r.bound + 1e-9);
+  EXPECT_NEAR(r.objective, value(weight, r.chosen), 1e-9);
+}
+
 TEST(SetPacking, AnOddCycleGoesThroughEveryStep) {
   // One 5-cycle: all five variables at 1/2 in the relaxation (bound 2.5), one fractional part,
   // solved exactly to 2; the 20% gap to the bound sends it to branch and bound, which proves

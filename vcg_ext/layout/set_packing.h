@@ -1,11 +1,13 @@
 // A 0-1 set-packing program, the form of the separatrix selection: maximise Σ w_j x_j over
 // binary x with Σ_{j∈R} x_j ≤ 1 for every row R. Solved with lp_solve in three steps:
-//  1. The LP relaxation, with its rows added as they are violated: starting from no rows,
-//     each round adds the most violated rows not sharing a positive variable with a row
-//     already added in that round, and lp_solve solves again from its last basis, until no
-//     row is violated. The relaxation's optimum is that of the full LP, but lp_solve works
-//     on a fraction of the rows (the dragon's largest part: 3.7K of 11.4K rows, 2.2 s
-//     instead of 5.3 s).
+//  1. The LP relaxation, with its rows added as they are violated and its variables as they
+//     price in: starting from the variables of a greedy selection and no row, each round
+//     adds the most violated rows (none sharing a positive variable with a row added before
+//     it in that round) or, when no row is violated, the variables with the largest positive
+//     reduced costs under the duals of the rows, and lp_solve solves again from its last
+//     basis, until neither is left. The relaxation's optimum is that of the full LP, but
+//     lp_solve works on part of it (the dragon's largest part: 3.2K of 11.4K rows and 6.2K
+//     of 10.8K variables, about 1 s instead of 5.3 s).
 //  2. Relax and fix: variables at 1 in the relaxation are taken, those at 0 left out, and the
 //     fractional rest, which splits into small independent parts, is solved exactly part by
 //     part by branch and bound; any variable left free after that is added, heaviest first.
@@ -37,6 +39,7 @@ struct SetPackingResult {
   std::string message;            ///< how it was solved, or why it failed
   int relaxationRounds = 0;       ///< LP solves in step 1
   int rowsInRelaxation = 0;       ///< rows step 1 needed
+  int columnsInRelaxation = 0;    ///< variables step 1 needed
   int fractional = 0;             ///< variables with a fractional value in the relaxation
   int fractionalParts = 0;        ///< independent parts among them (step 2)
   bool branchAndBound = false;    ///< step 3 ran
