@@ -220,10 +220,13 @@ done
   layout removes such dead ends (`layout.dead_ends_removed`), the singularity lies inside a
   patch with one corner, which gets two corners added on its boundary and is cut as a 3-gon
   (`layout.added_corners`). Its first 0-1 program has 21K candidates in one independent
-  part; half of them are dominated and left out (below), and lp_solve's LP relaxation of the
-  rest takes about 5.5 s. Branch and bound finds its best selection within a second after
-  that and then stops, 3 s without a better one (`--ilp-stall`); it used to run into the 60 s
-  limit without finding anything better. Its t-junctions (311) tie chord classes by side
+  part; half of them are dominated and left out (below), and the rest is solved as a set
+  packing (below): the LP relaxation with the 3.2K of its 11.4K rows and 5.0K of its 10.8K
+  candidates it needs (about 1 s), the
+  relaxation fixed where integral and its fractional rest solved by parts (0.1 s; 0.78% below
+  the LP bound), then 1 s of branch and bound that finds nothing better (`--ilp-stall`).
+  Branch and bound on the whole part used to take 9 s for a worse selection (1% less), and
+  before the stall limit it ran into the 60 s limit. Its t-junctions (305) tie chord classes by side
   equalities that no positive integers satisfy (zero chains): 113–130 patches are split over
   the rounds. The side-length
   programs now take seconds (one cost variable per chord class instead of one per segment: the
@@ -387,6 +390,79 @@ whole command, output files included):
 | bunny (α 15, k 30) | 0.46 → 0.42 s | 2.55 → 1.86 s (1.37×) | 0.30 → 0.26 s | 5.03 → 3.68 s (1.37×) |
 | fertility (α 30, k 30) | 0.40 → 0.40 s | 2.80 → 1.76 s (1.59×) | 1.06 → 0.76 s | 6.77 → 4.68 s (1.45×) |
 | rockerarm (α 30, k 30) | 0.37 → 0.34 s | 1.76 → 1.24 s (1.42×) | 0.20 → 0.25 s | 4.79 → 3.65 s (1.31×) |
+
+### The 0-1 program as a set packing, graph H's crossings as cliques (sixth session, 2026-12-02)
+
+The separatrix selection is a set packing: maximise Σ w·x over 0-1 variables with at most one
+variable per row (a port's candidates, Eq. 2; a triangle's conflict clique, Eq. 3). Each
+independent part is now solved in three steps (`layout/set_packing`), all with lp_solve:
+1. The LP relaxation with its rows added as they are violated and its variables as they
+   price in. It starts from the variables of a greedy selection and no row; each round, lp_solve
+   solves again from its last basis and then either the violated rows enter, most violated
+   first, skipping a row that shares a positive variable with one added in the same round, or,
+   when no row is violated, the variables left out whose reduced cost under the rows' duals is
+   positive, the 200 largest. When neither is left the values are optimal for the whole
+   relaxation (every row holds, and the duals, 0 on the rows left out, price every variable
+   left out at 0 or less). The dragon's largest part ends with 3.2K of its 11.4K rows and 5.0K
+   of its 10.8K variables after 121 rounds: about 1 s (0.9–1.3 s with 100–500 variables per
+   round) against
+   5.3 s for the relaxation with everything in and 2.0–2.4 s with the rows alone added as
+   needed (17 rounds, 3.7K rows; in their order instead of most violated first, 4.1K rows and
+   2.6–3.1 s; letting the rows of a round overlap, 4.6–6.5K rows and 3.1–5.6 s; with the 3.7K
+   rows it ends with, solved from scratch, 1.7 s). lp_solve's pricing rules, simplex types
+   and improve levels change none of these by more than this machine's noise.
+2. Relax and fix: the dragon's relaxation has 1,122 variables at 1 and 624 fractional ones,
+   which fall apart into 44 independent parts (the largest 112 variables); each part is solved
+   exactly by branch and bound (0.1 s in all), and variables nothing chosen conflicts with
+   are then added, heaviest first. Objective 4066.0, 0.78% below the LP bound: lp_solve's
+   branch and bound on the whole part had reached 4027.7 when it stalled, after 9 s.
+3. Unless that selection reaches the LP bound (relative gap 10⁻⁶), branch and bound runs on
+   the whole part with every row, accepting only better selections (`set_obj_bound`), from the
+   relaxation's optimal basis: the model is built anew in row-entry mode and given that basis
+   with the missing rows' slacks basic (adding the 7.7K missing rows to the relaxation's model
+   one by one cost lp_solve 0.9 s). The stall limit counts from step 2's selection. On the
+   dragon it found nothing better in 10 s (nor in 25 s with a 0.1% gap). On the other eleven
+   shared meshes and in 88 runs of a parameter sweep (11 meshes × α/k/φ 5/3/10°, 40/20/10°,
+   20/10/5°, 20/10/25°, 0/1/10°, 15/30/10°, 30/30/10°, 60/40/10°) every program was settled
+   within 0.6 s of 0-1 solving, with the same objective as branch and bound on the whole
+   program, and camelhead shows why the step is kept: its largest part's relax-and-fix
+   selection (389.95) is 0.16% below the optimum (390.56), which branch and bound finds and
+   proves in 0.01 s.
+
+The gap is now 10⁻⁶ instead of 0.1%: selections within 0.1% of each other can give very
+different layouts. Kitten at φ 25° gets 83 patches from the optimum and 126 from a selection
+0.025% below it, which relax and fix found and a 0.1% gap accepted. `--ilp-stall` defaults
+to 1 s instead of 3 s, since branch and bound now starts from a selection within 1% of the
+bound and, on every program above, either settles in well under a second or finds nothing.
+Not kept: removing simplicial candidates (those whose conflicts all conflict with each other
+and weigh no more) – the dragon's part has none; keeping every row in the model with an
+infinite right-hand side, set to 1 once violated (5.1 s: each solve carries all the rows).
+
+Graph H's tangential pairs were found by testing every pair of pieces of the same direction
+parity in every triangle (fertility: 0.21 s of its tracing), and the selection then built
+conflict cliques from the same pieces again. Now graph H builds the cliques (per triangle and
+parity, a greedy cover of the distinct chords that pairwise meet, each clique holding every
+candidate along its chords: 0.05 s) and reads the pairs off them (each candidate marks the
+candidates of its cliques: 0.01 s); the selection takes its rows from H. The pairs are the
+same (fertility 814,611, bunny 559,045, dragon 669,508), and a test checks pairs and cliques
+against every pair of pieces on the eight.
+
+The other eleven shared meshes give the same separatrices as before; the dragon gets a
+better selection and 4684 patches with 305 t-junctions (4731 and 311 before).
+Measured alternating in one session, `fcql run` at the bench parameters, HEAD b48890c against
+the new code, two runs each (before → after):
+
+| mesh | tracing | 0-1 programs | layout | whole run |
+|---|---:|---:|---:|---:|
+| bunny (α 15, k 30) | 0.80, 0.86 → 0.83, 0.77 s | 0.10, 0.12 → 0.06, 0.06 s | 1.85, 1.96 → 1.88, 1.81 s | 2.93, 2.91 → 2.93, 2.77 s |
+| fertility (α 30, k 30) | 0.90, 0.81 → 0.77, 0.74 s | 0.33, 0.33 → 0.30, 0.25 s | 2.02, 1.83 → 1.89, 1.85 s | 3.19, 2.84 → 3.08, 3.14 s |
+| rockerarm (α 30, k 30) | 0.55, 0.64 → 0.46, 0.51 s | 0.08, 0.10 → 0.04, 0.04 s | 1.48, 1.59 → 1.27, 1.41 s | 2.14, 2.25 → 2.02, 2.06 s |
+| dragon (α 15, k 10) | 0.45, 0.50 → 0.53, 0.49 s | 8.74, 9.66 → 4.39, 3.87 s | 10.88, 11.98 → 6.56, 6.03 s | 20.84, 21.28 → 18.39, 18.00 s |
+
+The table is before the variables were priced in; that took the dragon's 0-1 programs from
+3.6–4.2 s to about 2.7 s (same separatrices on all 12 meshes, same patches in the sweep). What
+is left there is the LP relaxation (about 1 s), the 1 s stall and 0.1 s of leaving dominated
+candidates out.
 
 ### Searches with a potential (fifth session, 2026-12-02)
 
