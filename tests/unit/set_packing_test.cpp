@@ -192,6 +192,15 @@ TEST(SetPacking, BranchAndBoundStopsWhenItFindsNothingBetter) {
   EXPECT_NE(r.message.find("not proven optimal"), std::string::npos) << r.message;
 }
 
+TEST(SetPacking, TheGreedySelectionTakesTheHeaviestFreeVariableFirst) {
+  const Rows rows = {{0, 1}, {1, 2}};
+  EXPECT_EQ(greedyPacking({1, 3, 1}, rows), (std::vector<char>{0, 1, 0}));
+  EXPECT_EQ(greedyPacking({2, 1, 2}, rows), (std::vector<char>{1, 0, 1}));
+  EXPECT_EQ(greedyPacking({1, 1, 1}, rows), (std::vector<char>{1, 0, 1})) << "ties: lower index first";
+  EXPECT_EQ(greedyPacking({1, 1, 1, 5}, rows), (std::vector<char>{1, 0, 1, 1})) << "a variable in no row is taken";
+  EXPECT_THROW(greedyPacking({1, 1}, {{0, 0}}), std::invalid_argument);
+}
+
 TEST(SetPacking, BadInputIsRefused) {
   EXPECT_THROW(solveSetPacking({1, 1}, {{0, 2}}, SetPackingOptions{}), std::invalid_argument);
   EXPECT_THROW(solveSetPacking({1, 1}, {{0, 0}}, SetPackingOptions{}), std::invalid_argument);

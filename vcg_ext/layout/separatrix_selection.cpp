@@ -69,11 +69,10 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
   // Constraints, each "at most one of these": Eq. 2 per port, Eq. 3 as conflict cliques per
   // triangle (every tangential pair meets in some triangle, so the cliques cover them all).
   std::vector<std::vector<int>> rows;
-  std::vector<std::vector<int>> portsOfVariable(n);
   for (int p = 0; p < int(h.arcsAtPort.size()); ++p) {
     std::vector<int> row;
     for (int a : h.arcsAtPort[p])
-      if (variableOf[a] >= 0) row.push_back(variableOf[a]), portsOfVariable[variableOf[a]].push_back(p);
+      if (variableOf[a] >= 0) row.push_back(variableOf[a]);
     std::sort(row.begin(), row.end());
     if (row.size() > 1) rows.push_back(std::move(row));
   }
@@ -105,32 +104,12 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     if (!leftOut[v]) members[uf.find(v)].push_back(v);
   for (int r = 0; r < int(rows.size()); ++r) rowsOf[uf.find(rows[r][0])].push_back(r);
 
-  // Greedy (best ratio first) is the fallback when lp_solve cannot do better in time.
-  std::vector<std::vector<int>> conflicts(n);
-  for (const auto& pr : h.tangentialPairs) {
-    int a = variableOf[pr.first], b = variableOf[pr.second];
-    if (a >= 0 && b >= 0) conflicts[a].push_back(b), conflicts[b].push_back(a);
-  }
   std::vector<char> chosen(n, 0);
-  std::vector<char> portTaken(h.arcsAtPort.size(), 0);
-  auto greedy = [&](const std::vector<int>& vars, std::vector<char>& taken) {
-    std::vector<int> order = vars;
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight[a] > weight[b]; });
-    double objective = 0;
-    for (int v : order) {
-      bool ok = true;
-      for (int p : portsOfVariable[v]) ok = ok && !portTaken[p];
-      for (int w : conflicts[v]) ok = ok && !taken[w];
-      if (!ok) continue;
-      taken[v] = 1;
-      for (int p : portsOfVariable[v]) portTaken[p] = 1;
-      objective += weight[v];
-    }
-    return objective;
-  };
-
   int usedGreedy = 0, parts = 0, programs = 0, timedOut = 0, stalled = 0;
   double worstGap = 0;  // of the parts not proven optimal: how far below their LP bound
+  std::vector<int> local(n, -1);  // a variable's index in its part
+  std::vector<double> localWeight;
+  std::vector<std::vector<int>> localRows;
 
   for (int root = 0; root < n; ++root) {
     const auto& vars = members[root];
@@ -140,16 +119,17 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
       chosen[vars[0]] = 1;
       continue;
     }
-    std::vector<char> greedyTaken(n, 0);
-    double greedyObjective = greedy(vars, greedyTaken);
-    std::vector<int> local(n, -1);
-    std::vector<double> localWeight;
+    localWeight.clear();
     for (int v : vars) local[v] = int(localWeight.size()), localWeight.push_back(weight[v]);
-    std::vector<std::vector<int>> localRows;
+    localRows.clear();
     for (int r : rowsOf[root]) {
       localRows.emplace_back();
       for (int v : rows[r]) localRows.back().push_back(local[v]);
     }
+    // Greedy (best ratio first) is the fallback when lp_solve cannot do better in time.
+    const std::vector<char> greedy = greedyPacking(localWeight, localRows);
+    double greedyObjective = 0;
+    for (std::size_t i = 0; i < greedy.size(); ++i) greedyObjective += greedy[i] ? localWeight[i] : 0;
     SetPackingOptions options;
     // Optimal up to rounding: selections within 0.1% of each other can give very different
     // layouts (kitten at φ 25°: 126 patches 0.025% below the optimum's 83), and where branch
@@ -166,7 +146,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
       worstGap = std::max(worstGap, (r.bound - r.objective) / std::max(1.0, std::abs(r.bound)));
     if (!r.hasSolution() || r.objective < greedyObjective - 1e-9) {
       ++usedGreedy;
-      for (int v : vars) chosen[v] = greedyTaken[v];
+      for (int v : vars) chosen[v] = greedy[local[v]];
     } else {
       for (int v : vars) chosen[v] = r.chosen[local[v]];
     }

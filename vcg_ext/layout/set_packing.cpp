@@ -42,6 +42,35 @@ void validate(const std::vector<double>& weight, const std::vector<std::vector<i
     }
 }
 
+/// For each variable, the rows it is in.
+std::vector<std::vector<int>> rowsOfVariables(int numVariables, const std::vector<std::vector<int>>& rows) {
+  std::vector<std::vector<int>> rowsOf(numVariables);
+  for (int r = 0; r < int(rows.size()); ++r)
+    for (int j : rows[r]) rowsOf[j].push_back(r);
+  return rowsOf;
+}
+
+/// Takes the variables not chosen yet whose rows hold no chosen one, heaviest first (ties:
+/// lower index first); `rowTaken` counts the chosen variables of each row and is kept up to
+/// date. Returns the variables taken, in the order they were.
+std::vector<int> takeFreeVariables(const std::vector<double>& weight, const std::vector<std::vector<int>>& rowsOf,
+                                   std::vector<int>& rowTaken, std::vector<char>& chosen) {
+  std::vector<int> order(weight.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight[a] > weight[b]; });
+  std::vector<int> taken;
+  for (int j : order) {
+    if (chosen[j]) continue;
+    bool free = true;
+    for (int r : rowsOf[j]) free = free && rowTaken[r] == 0;
+    if (!free) continue;
+    chosen[j] = 1;
+    taken.push_back(j);
+    for (int r : rowsOf[j]) ++rowTaken[r];
+  }
+  return taken;
+}
+
 /// The LP relaxation with its rows and columns added as they are needed (step 1). lp_solve
 /// works on the variables of a greedy selection at first and on no row; then, each round,
 /// either the violated rows enter (the most violated first, none sharing a positive variable
@@ -58,25 +87,15 @@ public:
     const int n = int(weight.size());
     x_.assign(n, 0);
     lastRound_.assign(n, -1);
-    rowsOf_.assign(n, {});
-    for (int r = 0; r < int(rows_.size()); ++r)
-      for (int j : rows_[r]) rowsOf_[j].push_back(r);
+    rowsOf_ = rowsOfVariables(n, rows_);
     if (!lp_) return;
     set_verbose(lp_.get(), NEUTRAL);
     set_maxim(lp_.get());
     set_presolve(lp_.get(), PRESOLVE_DUALS, get_presolveloops(lp_.get()));  // for the pricing
-    // The first columns: a greedy selection (heaviest first), feasible with every row.
-    std::vector<int> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight_[a] > weight_[b]; });
-    std::vector<char> rowTaken(rows_.size(), 0);
-    for (int j : order) {
-      bool free = true;
-      for (int r : rowsOf_[j]) free = free && !rowTaken[r];
-      if (!free) continue;
-      for (int r : rowsOf_[j]) rowTaken[r] = 1;
-      addColumn(j);
-    }
+    // The first columns: a greedy selection, feasible with every row.
+    std::vector<int> rowTaken(rows_.size(), 0);
+    std::vector<char> chosen(n, 0);
+    for (int j : takeFreeVariables(weight_, rowsOf_, rowTaken, chosen)) addColumn(j);
   }
 
   lprec* model() { return lp_.get(); }
@@ -84,6 +103,7 @@ public:
   int rounds() const { return rounds_; }
   int rowsInModel() const { return int(modelRows_.size()); }
   int columnsInModel() const { return int(modelColumns_.size()); }
+  const std::vector<std::vector<int>>& rowsOf() const { return rowsOf_; }
 
   /// Solves until no row is violated and no column prices in; false with `message` set if
   /// lp_solve fails.
@@ -255,33 +275,15 @@ private:
   int rounds_ = 0;
 };
 
-}  // namespace
-
-SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows,
-                                 const SetPackingOptions& options) {
-  validate(weight, rows);
+/// Step 2: variables at 1 in the relaxation `x` are taken, those at 0 left out, the fractional
+/// rest is solved exactly by independent parts, and variables left free are then taken,
+/// heaviest first. Counts the fractional variables and parts into `result`.
+std::vector<char> fixByParts(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows,
+                             const std::vector<std::vector<int>>& rowsOf, const std::vector<double>& x,
+                             const SetPackingOptions& options, const std::function<double()>& secondsLeft,
+                             SetPackingResult& result) {
   const int n = int(weight.size());
-  SetPackingResult result;
-  if (n == 0) {
-    result.status = IntegerProgram::Status::Optimal;
-    result.message = "empty program";
-    return result;
-  }
-  const auto start = Clock::now();
-  const std::function<double()> secondsLeft = [&] {
-    return options.timeLimitSeconds - std::chrono::duration<double>(Clock::now() - start).count();
-  };
-
-  // Step 1: the LP relaxation.
-  LazyRelaxation relaxation(weight, rows);
-  if (!relaxation.solve(secondsLeft, result.message)) return result;
-  result.relaxationRounds = relaxation.rounds();
-  result.rowsInRelaxation = relaxation.rowsInModel();
-  result.columnsInRelaxation = relaxation.columnsInModel();
-  result.bound = get_objective(relaxation.model());
-  const std::vector<double>& x = relaxation.values();
-
-  // Step 2: relax and fix. 1 taken, 0 left out, 2 fractional.
+  // 1 taken, 0 left out, 2 fractional.
   std::vector<char> state(n);
   for (int j = 0; j < n; ++j) state[j] = x[j] >= 1 - kIntegral ? 1 : (x[j] <= kIntegral ? 0 : 2);
   // A row holding a variable at 1 holds the others at 0 up to rounding noise: they stay out.
@@ -314,8 +316,7 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
       if (state[j] == 2) ++fractional, any = j;
     if (fractional >= 2) rowsOfPart[parts.find(any)].push_back(r);
   }
-  std::vector<char>& chosen = result.chosen;
-  chosen.assign(n, 0);
+  std::vector<char> chosen(n, 0);
   for (int j = 0; j < n; ++j) chosen[j] = state[j] == 1;
   std::vector<int> local(n, -1);
   for (int root = 0; root < n; ++root) {
@@ -340,28 +341,51 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
     const IntegerProgram::Result r = ip.solve(std::max(1.0, secondsLeft()));
     if (r.hasSolution())
       for (int j : part) chosen[j] = r.values[local[j]] > 0.5;
-    // else the part stays out: the completion below takes what it can
+    // else the part stays out: what can be taken is taken below
   }
-  // Completion: variables no chosen one conflicts with are taken, heaviest first.
-  std::vector<std::vector<int>> rowsOf(n);
   std::vector<int> rowTaken(rows.size(), 0);
   for (int r = 0; r < int(rows.size()); ++r)
-    for (int j : rows[r]) {
-      rowsOf[j].push_back(r);
-      rowTaken[r] += chosen[j];
-    }
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight[a] > weight[b]; });
-  for (int j : order) {
-    if (chosen[j]) continue;
-    bool free = true;
-    for (int r : rowsOf[j]) free = free && rowTaken[r] == 0;
-    if (!free) continue;
-    chosen[j] = 1;
-    for (int r : rowsOf[j]) ++rowTaken[r];
+    for (int j : rows[r]) rowTaken[r] += chosen[j];
+  takeFreeVariables(weight, rowsOf, rowTaken, chosen);
+  return chosen;
+}
+
+}  // namespace
+
+std::vector<char> greedyPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows) {
+  validate(weight, rows);
+  std::vector<int> rowTaken(rows.size(), 0);
+  std::vector<char> chosen(weight.size(), 0);
+  takeFreeVariables(weight, rowsOfVariables(int(weight.size()), rows), rowTaken, chosen);
+  return chosen;
+}
+
+SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows,
+                                 const SetPackingOptions& options) {
+  validate(weight, rows);
+  const int n = int(weight.size());
+  SetPackingResult result;
+  if (n == 0) {
+    result.status = IntegerProgram::Status::Optimal;
+    result.message = "empty program";
+    return result;
   }
-  for (int j = 0; j < n; ++j) result.objective += chosen[j] ? weight[j] : 0;
+  const auto start = Clock::now();
+  const std::function<double()> secondsLeft = [&] {
+    return options.timeLimitSeconds - std::chrono::duration<double>(Clock::now() - start).count();
+  };
+
+  // Step 1: the LP relaxation.
+  LazyRelaxation relaxation(weight, rows);
+  if (!relaxation.solve(secondsLeft, result.message)) return result;
+  result.relaxationRounds = relaxation.rounds();
+  result.rowsInRelaxation = relaxation.rowsInModel();
+  result.columnsInRelaxation = relaxation.columnsInModel();
+  result.bound = get_objective(relaxation.model());
+
+  // Step 2: relax and fix.
+  result.chosen = fixByParts(weight, rows, relaxation.rowsOf(), relaxation.values(), options, secondsLeft, result);
+  for (int j = 0; j < n; ++j) result.objective += result.chosen[j] ? weight[j] : 0;
 
   const double gapAllowed = options.relativeGap * std::max(1.0, std::abs(result.bound));
   if (result.bound - result.objective <= gapAllowed) {
@@ -409,7 +433,7 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
       feasible = feasible && taken <= 1;
     }
     if (feasible && objective > result.objective + 1e-9 * std::max(1.0, std::abs(result.objective))) {
-      chosen = better;
+      result.chosen = better;
       result.objective = objective;
       result.improvedByBranchAndBound = true;
     }

@@ -50,6 +50,10 @@ struct SetPackingResult {
   }
 };
 
+/// The greedy selection: heaviest first (ties: lower index first), each variable taken if no
+/// row it is in holds a taken one already. Same input rules as solveSetPacking.
+std::vector<char> greedyPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows);
+
 /// `rows`: sets of variable indices in [0, weight.size()), each without repeats and of at
 /// least two variables; weights positive. Throws std::invalid_argument otherwise.
 SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows,
