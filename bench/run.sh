@@ -176,15 +176,19 @@ done
   this is 0.04–0.1 s on the bunny instead of 0.2–0.3 s, though candidates.obj alone is 26 MB). The last column divides the paper's time by ours. The tracing (a
   Dijkstra search from every port until k sinks are reached, now guided by the exact distance
   to the nearest sink, below) no longer dominates alone. The issue's target, 10× below the
-  paper's time on the layout, is met on rockerarm (22.9–30.7× in four bench runs on 2026-12-02
-  with the guided searches; the comparison is unfair the other way: our rockerarm has 20K
-  faces, the paper's 70K) and on the bunny (12.7–13.9×, 8.5–9.6× on the whole run); fertility
-  is at 9.5–11.3× (5.9–7.7× on the whole run), on either side of it with this machine's
-  speed; the dragon is not (5.0–6.0×: its first 0-1 program takes 8.5–10 s, below; it was
-  1.0× before that program stopped once its best solution stalled). Before the searches were guided (six bench runs on 2026-12-02):
-  bunny 6.6–9.1×, fertility 5.9–7.7×, rockerarm 16–19.5×. Times vary by 10–40% from run to run on this machine (a shared virtual
-  machine: the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the
-  same tracing code).
+  paper's time on the layout, is met on all four paper meshes in four bench runs on 2026-12-02
+  after the 0-1 programs were solved as set packings (below): the bunny 13.7–15.3× (9.0–10.3× on
+  the whole run), fertility 12.3–15.1× (7.7–8.9×), rockerarm 27.9–29.7× (18.7–20.2×; the
+  comparison is unfair the other way: our rockerarm has 20K faces, the paper's 70K) and the
+  dragon 14.1–16.1× (3.8–4.0× on the whole run, whose quad stage, 11 s, the paper does not
+  time). Before that, in four runs with only the rows added lazily: bunny 13.5–15.2×,
+  fertility 10.9–13.5×, rockerarm 27.4–37.0×, dragon 9.9–12.1×; with branch and bound on the
+  whole program (four runs): bunny 12.7–13.9×, fertility 9.5–11.3×, rockerarm 22.9–30.7×,
+  dragon 5.0–6.0× (1.0× before that program stopped once its best solution stalled); before
+  the searches were guided (six runs): bunny 6.6–9.1×, fertility 5.9–7.7×, rockerarm
+  16–19.5×. Times vary by 10–40% from run to run on this machine (a shared virtual machine:
+  the bunny's layout took 2.9 s in one bench run and 3.5 s in the next, with the same tracing
+  code).
 - **Quality**: every mesh is within 1% of the diagonal. Where the quads stray farther, the
   quad stage first undoes the smoothing around those points (`quad.restored_vertices`:
   smoothing keeps vertices on the surface but lets them slide off sharp tips, which are then
@@ -196,7 +200,7 @@ done
   strip are not parallel; elsewhere 17–43% of the quads are more than π/16 off the field in
   their worse direction. Counted as the paper's Table 2 counts (*mis. faces %*: input faces
   where the cross fitted to the quad's two directions is more than π/16 off the field, so that
-  shear counts half), 4–22%: fertility 5.7% against the paper's 5.9%, rockerarm 9.7% against
+  shear counts half), 4–22%: fertility 5.7% against the paper's 5.9%, rockerarm 9.6% against
   2.6% (the paper's rockerarm has 70K faces and its own field), the dragon 22% (795
   singularities), the open strips of aqua_center and lilium 32%. A few quads stay nearly flat or just folded (scaled Jacobian just
   below 0 on some meshes; on rockerarm two quads with a valence-3 corner lie across a 99°
@@ -227,16 +231,19 @@ done
   the LP bound), then 1 s of branch and bound that finds nothing better (`--ilp-stall`).
   Branch and bound on the whole part used to take 9 s for a worse selection (1% less), and
   before the stall limit it ran into the 60 s limit. Its t-junctions (305) tie chord classes by side
-  equalities that no positive integers satisfy (zero chains): 113–130 patches are split over
-  the rounds. The side-length
+  equalities that no positive integers satisfy (zero chains): 113–134 patches are split over
+  the rounds (134 with the set-packing selection). The side-length
   programs now take seconds (one cost variable per chord class instead of one per segment: the
   largest part's relaxation is proved infeasible in 0.4 s instead of 19 s; a part branch and
   bound cannot settle in time is solved by rounding its LP relaxation), and the dragon gets
-  its quad mesh: 52K quads within 0.90% of the surface at the first pass (with the layout
-  found at the 60 s limit: 75K quads within 0.74–0.78%, after one finer pass), with 20–30
-  folded quads (scaled Jacobian down to about −0.6; the
-  three worst lie across creases of 137–144° on its spikes, features finer than the quads). Its figures change from run to run, as lp_solve's selection when it stops
-  does. Before the changes below, with `--ilp-time-limit 5` the whole run took 81 s: the greedy
+  its quad mesh: 60K quads within 0.88% of the surface at the first pass (52K within 0.90%
+  with branch and bound's selection; with the layout found at the 60 s limit: 75K quads
+  within 0.74–0.78%, after one finer pass), with 31 folded quads (20–30 before; scaled
+  Jacobian down to about −0.67; the
+  three worst lie across creases of 137–144° on its spikes, features finer than the quads). Its layout is now the same in every run (branch and bound,
+  stopped by the stall limit, never found a better selection than relax and fix); its quads
+  vary a little (59,749–59,815), as the side-length parts larger than 1000 variables stop at
+  their 2 s budget wherever lp_solve is then. Before the changes below, with `--ilp-time-limit 5` the whole run took 81 s: the greedy
   selection (5288 patches, 481 t-junctions), 395 patches split in 7 rounds, 88K quads within
   0.81% of the surface, scaled Jacobian down to −0.23 (before the corner rule above its splits
   did not converge in 8 rounds).
