@@ -242,7 +242,13 @@ private:
   /// False if no variable left out has a positive reduced cost.
   bool addPricedColumns() {
     double* duals = nullptr;  // [0] the objective, then one per row of the model
-    if (!get_ptr_dual_solution(lp_.get(), &duals) || !duals) return false;
+    if (!get_ptr_dual_solution(lp_.get(), &duals) || !duals) {
+      // Without duals nothing can be priced: every variable left out enters at once.
+      const std::size_t before = modelColumns_.size();
+      for (int j = 0; j < int(weight_.size()); ++j)
+        if (!columnOf_[j]) addColumn(j);
+      return modelColumns_.size() > before;
+    }
     priced_.clear();
     for (int j = 0; j < int(weight_.size()); ++j) {
       if (columnOf_[j]) continue;
