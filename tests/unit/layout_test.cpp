@@ -255,6 +255,20 @@ void addCandidate(SeparatrixGraph& h, int i, double length, std::vector<PathSegm
 
 }  // namespace
 
+TEST(Layout, TangentialCliquesSplitWhereChordsDoNotAllMeet) {
+  // One triangle, three candidates in the same direction class: 0 crosses 1 and 1 crosses 2,
+  // but 0 and 2 are disjoint, so no single clique may hold all three. A fourth one, in the
+  // other parity, crosses all of them orthogonally and is in no clique.
+  SeparatrixGraph h;
+  addCandidate(h, 0, 1.0, {{0, 0, 0.5, 1.5}});
+  addCandidate(h, 1, 1.0, {{0, 2, 1.2, 2.5}});
+  addCandidate(h, 2, 1.0, {{0, 0, 2.2, 2.9}});
+  addCandidate(h, 3, 1.0, {{0, 1, 0.1, 2.0}});
+  classifyCrossings(makeSphere(1), h);
+  EXPECT_EQ(h.tangentialCliques, (std::vector<std::vector<int>>{{0, 1}, {1, 2}}));
+  EXPECT_EQ(h.tangentialPairs, (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}}));
+}
+
 TEST(Layout, SelectionDropsConflictRowsInsideLargerOnes) {
   // Four candidates with their own ports. In face 0, candidates 0, 1 and 2 cross pairwise
   // in the same direction class (one "at most one" clique); in face 1, candidates 0 and 1

@@ -156,6 +156,7 @@ TEST(SetPacking, AnOddCycleGoesThroughEveryStep) {
   EXPECT_EQ(r.fractional, 5);
   EXPECT_EQ(r.fractionalParts, 1);
   EXPECT_TRUE(r.branchAndBound);
+  EXPECT_TRUE(r.warmStarted) << "branch and bound starts from the relaxation's basis";
   EXPECT_FALSE(r.improvedByBranchAndBound);
   EXPECT_NEAR(r.objective, 2, 1e-9);
   EXPECT_TRUE(feasible(rows, r.chosen));
@@ -199,6 +200,46 @@ TEST(SetPacking, TheGreedySelectionTakesTheHeaviestFreeVariableFirst) {
   EXPECT_EQ(greedyPacking({1, 1, 1}, rows), (std::vector<char>{1, 0, 1})) << "ties: lower index first";
   EXPECT_EQ(greedyPacking({1, 1, 1, 5}, rows), (std::vector<char>{1, 0, 1, 1})) << "a variable in no row is taken";
   EXPECT_THROW(greedyPacking({1, 1}, {{0, 0}}), std::invalid_argument);
+}
+
+TEST(SetPacking, TheWeightsUnitsDoNotMatter) {
+  // The same random program with its weights scaled by 1e-12 and 1e12: the same selection, and
+  // objective and bound scaled alike (lp_solve's tolerances are absolute; the solver is not).
+  std::mt19937 random(3);
+  const int n = 300;
+  std::vector<double> weight(n);
+  for (double& w : weight) w = std::uniform_real_distribution<double>(0.2, 3.0)(random);
+  Rows rows;
+  for (int r = 0; r < 450; ++r) {
+    const int first = std::uniform_int_distribution<int>(0, n - 20)(random);
+    std::vector<int> vars = {first, first + 1 + std::uniform_int_distribution<int>(0, 18)(random)};
+    rows.push_back(vars);
+  }
+  SetPackingOptions options;
+  options.stallSeconds = 0.3;
+  const SetPackingResult base = solveSetPacking(weight, rows, options);
+  ASSERT_TRUE(base.hasSolution()) << base.message;
+  for (double scale : {1e-12, 1e12}) {
+    std::vector<double> scaled(weight);
+    for (double& w : scaled) w *= scale;
+    const SetPackingResult r = solveSetPacking(scaled, rows, options);
+    ASSERT_TRUE(r.hasSolution()) << r.message;
+    EXPECT_EQ(r.chosen, base.chosen) << "scale " << scale;
+    EXPECT_NEAR(r.objective / scale, base.objective, 1e-9 * base.objective);
+    EXPECT_NEAR(r.bound / scale, base.bound, 1e-6 * base.bound);
+  }
+}
+
+TEST(SetPacking, SmallAndUnconstrainedPrograms) {
+  // One variable, no row; variables in no row beside constrained ones; rows of one variable.
+  SetPackingResult r = solveSetPacking({2.0}, {}, SetPackingOptions{});
+  ASSERT_EQ(r.status, IntegerProgram::Status::Optimal) << r.message;
+  EXPECT_EQ(r.chosen, (std::vector<char>{1}));
+  EXPECT_NEAR(r.objective, 2, 1e-12);
+  r = solveSetPacking({1, 2, 3, 4}, {{0, 1}, {2}}, SetPackingOptions{});
+  ASSERT_EQ(r.status, IntegerProgram::Status::Optimal) << r.message;
+  EXPECT_EQ(r.chosen, (std::vector<char>{0, 1, 1, 1}));
+  EXPECT_NEAR(r.objective, 9, 1e-9);
 }
 
 TEST(SetPacking, BadInputIsRefused) {

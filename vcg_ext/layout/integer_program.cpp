@@ -104,7 +104,7 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   auto start = std::chrono::steady_clock::now();
   LpModel lp = buildModel(false, result.message);
   if (!lp) return result;
-  set_timeout(lp.get(), std::max(1L, long(std::ceil(timeLimitSeconds))));
+  setTimeLimit(lp.get(), timeLimitSeconds);
   set_mip_gap(lp.get(), FALSE, relativeGap_);
   StallWatch watch;
   watch.limitSeconds = stallSeconds_;
@@ -215,7 +215,7 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
     // nothing to round (the dragon's soft side-length programs take lp_solve 5–7 s each).
     // Once the limit is spent, everything left is rounded at once and one more solve
     // finishes the job.
-    set_timeout(lp.get(), long(std::ceil(std::max(timeLimitSeconds, kMinRelaxationSeconds))));
+    setTimeLimit(lp.get(), std::max(timeLimitSeconds, kMinRelaxationSeconds));
     const int ret = ::solve(lp.get());  // after the first round, from the last basis
     const bool unbounded =
         ret == UNBOUNDED || ((ret == OPTIMAL || ret == SUBOPTIMAL || ret == PRESOLVED) && objectiveAtInfinity(lp.get()));

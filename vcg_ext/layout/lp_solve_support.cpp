@@ -1,5 +1,6 @@
 #include "layout/lp_solve_support.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fcql {
@@ -26,6 +27,11 @@ void watchForStall(lprec* lp, StallWatch& watch) {
   if (!(watch.limitSeconds > 0)) return;
   put_msgfunc(lp, noteImprovement, &watch, MSG_MILPFEASIBLE | MSG_MILPBETTER);
   put_abortfunc(lp, stallReached, &watch);
+}
+
+void setTimeLimit(lprec* lp, double seconds) {
+  const double whole = std::ceil(std::isnan(seconds) ? 1.0 : std::clamp(seconds, 1.0, 1e6));
+  set_timeout(lp, long(whole));
 }
 
 bool objectiveAtInfinity(lprec* lp) { return std::abs(get_objective(lp)) >= 0.1 * get_infinite(lp); }

@@ -25,6 +25,10 @@ struct StallWatch {
 /// solve.
 void watchForStall(lprec* lp, StallWatch& watch);
 
+/// Sets lp_solve's time limit (whole seconds, at least 1; infinite or huge limits are capped
+/// at a million seconds rather than overflowing the conversion).
+void setTimeLimit(lprec* lp, double seconds);
+
 /// lp_solve may "solve" an unbounded model to its infinity (1e30).
 bool objectiveAtInfinity(lprec* lp);
 

@@ -130,14 +130,20 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     const std::vector<char> greedy = greedyPacking(localWeight, localRows);
     double greedyObjective = 0;
     for (std::size_t i = 0; i < greedy.size(); ++i) greedyObjective += greedy[i] ? localWeight[i] : 0;
+    const double secondsLeft =
+        timeLimitSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (secondsLeft <= 0) {  // the time is spent: the greedy selection for the parts left
+      ++timedOut, ++usedGreedy;
+      for (int v : vars) chosen[v] = greedy[local[v]];
+      continue;
+    }
     SetPackingOptions options;
     // Optimal up to rounding: selections within 0.1% of each other can give very different
     // layouts (kitten at φ 25°: 126 patches 0.025% below the optimum's 83), and where branch
     // and bound cannot settle a part the stall limit stops it.
     options.relativeGap = 1e-6;
     options.stallSeconds = stallSeconds;
-    options.timeLimitSeconds =
-        std::max(1.0, timeLimitSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    options.timeLimitSeconds = secondsLeft;
     const SetPackingResult r = solveSetPacking(localWeight, localRows, options);
     ++programs;
     if (r.status == IntegerProgram::Status::TimeLimit || !r.hasSolution()) ++timedOut;

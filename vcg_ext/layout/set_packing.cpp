@@ -114,7 +114,11 @@ public:
     }
     std::vector<double> values;
     for (;;) {
-      set_timeout(lp_.get(), std::max(1L, long(std::ceil(secondsLeft()))));
+      if (failed_) {
+        message = "lp_solve could not add a row or a variable to the LP relaxation (out of memory?)";
+        return false;
+      }
+      setTimeLimit(lp_.get(), secondsLeft());
       const int ret = ::solve(lp_.get());  // after the first round, from the last basis
       if (ret != OPTIMAL && ret != PRESOLVED) {
         message = ret == TIMEOUT ? "lp_solve reached the time limit on the LP relaxation"
@@ -139,7 +143,8 @@ public:
   /// columns it did without at 0, which keeps the basis optimal. Built anew in row-entry mode:
   /// adding the rest of the rows to the relaxation's model one by one costs lp_solve 0.9 s on
   /// the dragon. Null with `message` set if lp_solve fails.
-  LpModel wholeProgram(std::string& message) const {
+  LpModel wholeProgram(std::string& message, bool& warmStarted) const {
+    warmStarted = false;
     const int n = int(weight_.size()), m = int(rows_.size());
     LpModel lp(make_lp(0, n), delete_lp);
     if (!lp) {
@@ -157,7 +162,10 @@ public:
       cols.clear();
       for (int j : row) cols.push_back(j + 1);
       ones.assign(cols.size(), 1.0);
-      add_constraintex(lp.get(), int(cols.size()), ones.data(), cols.data(), LE, 1);
+      if (!add_constraintex(lp.get(), int(cols.size()), ones.data(), cols.data(), LE, 1)) {
+        message = "lp_solve could not build the whole program (out of memory?)";
+        return LpModel(nullptr, delete_lp);
+      }
     }
     set_add_rowmode(lp.get(), FALSE);
     for (int j = 1; j <= n; ++j) {
@@ -181,8 +189,9 @@ public:
       for (int i = k + 1; i <= k + c; ++i) to[at++] = map(from[i]);
       for (int j = 0; j < n; ++j)
         if (!columnOf_[j]) to[at++] = -(m + j + 1);
-      set_basis(lp.get(), to.data(), TRUE);  // if refused, lp_solve starts from its own basis
+      warmStarted = set_basis(lp.get(), to.data(), TRUE);
     }
+    if (!warmStarted) default_basis(lp.get());  // a refused basis may be left half written
     return lp;
   }
 
@@ -196,7 +205,10 @@ private:
     entries_.insert(entries_.begin(), 0);  // the objective
     values_.assign(entries_.size(), 1.0);
     values_[0] = weight_[j];
-    add_columnex(lp_.get(), int(entries_.size()), values_.data(), entries_.data());
+    if (!add_columnex(lp_.get(), int(entries_.size()), values_.data(), entries_.data())) {
+      failed_ = true;
+      return;
+    }
     modelColumns_.push_back(j);
     columnOf_[j] = int(modelColumns_.size());
     set_bounds(lp_.get(), columnOf_[j], 0, 1);
@@ -209,7 +221,10 @@ private:
       if (columnOf_[j]) entries_.push_back(columnOf_[j]);
     std::sort(entries_.begin(), entries_.end());
     values_.assign(entries_.size(), 1.0);
-    add_constraintex(lp_.get(), int(entries_.size()), values_.data(), entries_.data(), LE, 1);
+    if (!add_constraintex(lp_.get(), int(entries_.size()), values_.data(), entries_.data(), LE, 1)) {
+      failed_ = true;
+      return;
+    }
     modelRows_.push_back(r);
     rowInModel_[r] = int(modelRows_.size());
   }
@@ -279,6 +294,7 @@ private:
   std::vector<int> entries_;
   std::vector<double> values_;
   int rounds_ = 0;
+  bool failed_ = false;  // lp_solve refused a row or a column: the model no longer matches
 };
 
 /// Step 2: variables at 1 in the relaxation `x` are taken, those at 0 left out, the fractional
@@ -344,7 +360,8 @@ std::vector<char> fixByParts(const std::vector<double>& weight, const std::vecto
         if (state[j] == 2) terms.push_back({local[j], 1.0});
       ip.addConstraint(terms, IntegerProgram::Sense::LessEqual, 1.0);
     }
-    const IntegerProgram::Result r = ip.solve(std::max(1.0, secondsLeft()));
+    if (secondsLeft() <= 0) continue;  // no time left: what can be taken is taken below
+    const IntegerProgram::Result r = ip.solve(secondsLeft());
     if (r.hasSolution())
       for (int j : part) chosen[j] = r.values[local[j]] > 0.5;
     // else the part stays out: what can be taken is taken below
@@ -381,20 +398,26 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
     return options.timeLimitSeconds - std::chrono::duration<double>(Clock::now() - start).count();
   };
 
+  // lp_solve works on weights scaled to at most 1, so that its absolute tolerances (and the
+  // pricing's) mean the same whatever the weights' units; objectives are reported unscaled.
+  const double scale = *std::max_element(weight.begin(), weight.end());
+  std::vector<double> unit(n);
+  for (int j = 0; j < n; ++j) unit[j] = weight[j] / scale;
+
   // Step 1: the LP relaxation.
-  LazyRelaxation relaxation(weight, rows);
+  LazyRelaxation relaxation(unit, rows);
   if (!relaxation.solve(secondsLeft, result.message)) return result;
   result.relaxationRounds = relaxation.rounds();
   result.rowsInRelaxation = relaxation.rowsInModel();
   result.columnsInRelaxation = relaxation.columnsInModel();
-  result.bound = get_objective(relaxation.model());
+  result.bound = get_objective(relaxation.model()) * scale;
 
   // Step 2: relax and fix.
-  result.chosen = fixByParts(weight, rows, relaxation.rowsOf(), relaxation.values(), options, secondsLeft, result);
+  result.chosen = fixByParts(unit, rows, relaxation.rowsOf(), relaxation.values(), options, secondsLeft, result);
   for (int j = 0; j < n; ++j) result.objective += result.chosen[j] ? weight[j] : 0;
+  auto belowBound = [&] { return percent((result.bound - result.objective) / result.bound); };
 
-  const double gapAllowed = options.relativeGap * std::max(1.0, std::abs(result.bound));
-  if (result.bound - result.objective <= gapAllowed) {
+  if (result.bound - result.objective <= options.relativeGap * result.bound) {
     result.status = IntegerProgram::Status::Optimal;
     result.message = result.fractional == 0
                          ? "the LP relaxation is integral"
@@ -403,10 +426,16 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
     return result;
   }
 
+  if (secondsLeft() <= 0) {
+    result.status = IntegerProgram::Status::TimeLimit;
+    result.message = "the relaxation fixed by parts, " + belowBound() + " below the LP bound; no time left to improve it";
+    return result;
+  }
+
   // Step 3: branch and bound on the whole, for a better selection than step 2's.
   result.branchAndBound = true;
   std::string failure;
-  LpModel whole = relaxation.wholeProgram(failure);
+  LpModel whole = relaxation.wholeProgram(failure, result.warmStarted);
   if (!whole) {
     result.status = IntegerProgram::Status::TimeLimit;
     result.message = "the relaxation fixed by parts, not improved: " + failure;
@@ -414,14 +443,15 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
   }
   lprec* lp = whole.get();
   set_mip_gap(lp, FALSE, options.relativeGap);
-  set_obj_bound(lp, result.objective);  // only better selections are accepted
+  set_obj_bound(lp, result.objective / scale);  // only better selections are accepted
   StallWatch watch;
   watch.limitSeconds = options.stallSeconds;
   watch.haveSolution = true;  // step 2's
   watch.lastImprovement = Clock::now();
   watchForStall(lp, watch);
-  set_timeout(lp, std::max(1L, long(std::ceil(secondsLeft()))));
+  setTimeLimit(lp, secondsLeft());
   const int ret = ::solve(lp);
+  bool discarded = false;  // branch and bound's selection broke a row (lp_solve's tolerances)
   if (get_solutioncount(lp) > 0 && (ret == OPTIMAL || ret == PRESOLVED || ret == SUBOPTIMAL || ret == TIMEOUT ||
                                     ret == USERABORT)) {
     std::vector<double> values(n);
@@ -438,7 +468,8 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
       for (int j : row) taken += better[j];
       feasible = feasible && taken <= 1;
     }
-    if (feasible && objective > result.objective + 1e-9 * std::max(1.0, std::abs(result.objective))) {
+    discarded = !feasible;
+    if (feasible && objective > result.objective * (1 + 1e-9)) {
       result.chosen = better;
       result.objective = objective;
       result.improvedByBranchAndBound = true;
@@ -446,19 +477,23 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
   }
   const std::string what = result.improvedByBranchAndBound ? "branch and bound improved the relaxation fixed by parts"
                                                            : "the relaxation fixed by parts";
-  if (ret == OPTIMAL || ret == PRESOLVED || ret == INFEASIBLE) {  // INFEASIBLE: nothing better exists
+  if (discarded) {
+    result.status = IntegerProgram::Status::TimeLimit;
+    result.message = "the relaxation fixed by parts, " + belowBound() +
+                     " below the LP bound; branch and bound's selection broke a row and was discarded";
+  } else if (ret == OPTIMAL || ret == PRESOLVED || ret == INFEASIBLE) {  // INFEASIBLE: nothing better exists
     result.status = IntegerProgram::Status::Optimal;
     result.message = what + ": proven within " + percent(options.relativeGap) + " of the optimum by branch and bound";
   } else if (watch.stopped) {
     result.status = IntegerProgram::Status::Stalled;
     char stall[32];
     std::snprintf(stall, sizeof stall, "%g", options.stallSeconds);
-    result.message = what + ", " + percent((result.bound - result.objective) / std::max(1.0, std::abs(result.bound))) +
+    result.message = what + ", " + belowBound() +
                      " below the LP bound; branch and bound found nothing better for " + stall +
                      " s (not proven optimal)";
   } else {
     result.status = IntegerProgram::Status::TimeLimit;
-    result.message = what + ", " + percent((result.bound - result.objective) / std::max(1.0, std::abs(result.bound))) +
+    result.message = what + ", " + belowBound() +
                      " below the LP bound; branch and bound stopped (" +
                      (ret == TIMEOUT || ret == SUBOPTIMAL ? std::string("time limit")
                                                           : "lp_solve code " + std::to_string(ret)) +

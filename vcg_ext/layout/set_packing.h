@@ -43,6 +43,7 @@ struct SetPackingResult {
   int fractional = 0;             ///< variables with a fractional value in the relaxation
   int fractionalParts = 0;        ///< independent parts among them (step 2)
   bool branchAndBound = false;    ///< step 3 ran
+  bool warmStarted = false;       ///< step 3 started from the relaxation's basis
   bool improvedByBranchAndBound = false;
   bool hasSolution() const {
     return status == IntegerProgram::Status::Optimal || status == IntegerProgram::Status::TimeLimit ||
@@ -54,8 +55,10 @@ struct SetPackingResult {
 /// row it is in holds a taken one already. Same input rules as solveSetPacking.
 std::vector<char> greedyPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows);
 
-/// `rows`: sets of variable indices in [0, weight.size()), each without repeats and of at
-/// least two variables; weights positive. Throws std::invalid_argument otherwise.
+/// `rows`: sets of variable indices in [0, weight.size()), each without repeats (a row of one
+/// variable or none constrains nothing); weights positive and finite. Throws
+/// std::invalid_argument otherwise. Once the time limit is spent, the fractional parts and
+/// step 3 are skipped (status TimeLimit).
 SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::vector<std::vector<int>>& rows,
                                  const SetPackingOptions& options);
 
