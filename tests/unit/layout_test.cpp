@@ -293,6 +293,24 @@ TEST(Layout, SelectionDropsConflictRowsInsideLargerOnes) {
   EXPECT_EQ(r.selected, (std::vector<int>{1, 3}));
 }
 
+TEST(Layout, SelectionFallsBackToTheGreedyOneWhenNoTimeIsLeft) {
+  // The program of the test above with no time at all: no part goes to lp_solve, each takes
+  // the greedy selection (heaviest first: 0, which conflicts with all the others, where the
+  // optimum is {1, 3}), and the result says the time limit was reached.
+  SeparatrixGraph h;
+  addCandidate(h, 0, 1.0, {{0, 0, 0.5, 1.5}, {1, 0, 0.5, 1.5}, {2, 1, 0.5, 1.5}});
+  addCandidate(h, 1, 2.0, {{0, 2, 0.7, 2.5}, {1, 0, 0.7, 2.5}});
+  addCandidate(h, 2, 3.0, {{0, 0, 1.2, 2.8}});
+  addCandidate(h, 3, 1.5, {{2, 3, 0.7, 2.5}});
+  h.arcsAtPort.assign(8, {});
+  for (int i = 0; i < 4; ++i) h.arcsAtPort[2 * i] = h.arcsAtPort[2 * i + 1] = {i};
+  classifyCrossings(makeSphere(1), h);
+  const SelectionResult r = selectSeparatrices(h, {}, 0);
+  EXPECT_EQ(r.status, IntegerProgram::Status::TimeLimit);
+  EXPECT_NE(r.message.find("greedy selection was better on 1"), std::string::npos) << r.message;
+  EXPECT_EQ(r.selected, (std::vector<int>{0})) << "0 conflicts with 1, 2 and 3";
+}
+
 TEST(Layout, CandidatesAlongOneChordConflictEvenWhenNothingElseCrossesIt) {
   // Candidates 0 and 1 run along the very same chord of face 0, which no other piece meets;
   // candidate 2 has face 1 to itself. 0 and 1 overlap tangentially (one row {0, 1}), 2 is free.
