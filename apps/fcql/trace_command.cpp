@@ -47,7 +47,8 @@ TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, 
   t.graphSeconds = std::chrono::duration<double>(built - start).count();
   t.tracingSeconds = std::chrono::duration<double>(traced - built).count();
   progress(quiet, "graph H: " + std::to_string(t.h.arcs.size()) + " candidate separatrices, " +
-                      std::to_string(t.h.tangentialPairs.size()) + " pairs crossing tangentially");
+                      std::to_string(t.h.tangentialPairs.size()) + " pairs crossing tangentially (" +
+                      std::to_string(t.h.tangentialCliques.size()) + " cliques)");
   stats.set("params.alpha", params.alpha);
   stats.set("params.k", params.k);
   stats.set("params.phi", params.phiDeg);
@@ -57,6 +58,7 @@ TraceStage runTraceStage(const FieldStage& fs, const TracingParameters& params, 
   stats.set("graph_g.ports", int(t.graph->ports().size()));
   stats.set("graph_h.arcs", int(t.h.arcs.size()));
   stats.set("graph_h.tangential_pairs", int(t.h.tangentialPairs.size()));
+  stats.set("graph_h.tangential_cliques", int(t.h.tangentialCliques.size()));
   stats.set("time_s.graph", t.graphSeconds);
   stats.set("time_s.tracing", t.tracingSeconds);
   return t;

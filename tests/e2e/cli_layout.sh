@@ -20,6 +20,12 @@ if "$fcql" trace --example rounded_box --out "$tmp/trace" --quiet; then
   lines=$(grep -c '^l ' "$tmp/trace/candidates.obj")
   [ "$h" = "$lines" ] || fail "rounded_box: candidates.obj has $lines polylines, stats say $h H arcs"
   [ "$lines" -ge 12 ] || fail "rounded_box: fewer than 12 candidates"
+  pairs=$(json_int "$s" tangential_pairs)
+  cliques=$(json_int "$s" tangential_cliques)
+  [ -n "$cliques" ] || fail "rounded_box: stats.json has no graph_h.tangential_cliques"
+  if [ "${pairs:-0}" -gt 0 ]; then
+    [ "${cliques:-0}" -gt 0 ] || fail "rounded_box: $pairs tangential pairs but no clique holds them"
+  fi
 else
   fail "fcql trace --example rounded_box exited non-zero"
 fi
