@@ -71,6 +71,14 @@ std::vector<int> takeFreeVariables(const std::vector<double>& weight, const std:
   return taken;
 }
 
+/// Sorts (value, index) pairs by value, largest first, then by index: the same order whatever
+/// the sort does with ties.
+void sortLargestFirst(std::vector<std::pair<double, int>>& items) {
+  std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;
+  });
+}
+
 /// The LP relaxation with its rows and columns added as they are needed (step 1). lp_solve
 /// works on the variables of a greedy selection at first and on no row; then, each round,
 /// either the violated rows enter (the most violated first, none sharing a positive variable
@@ -239,9 +247,7 @@ private:
       if (sum > 1 + kViolation) violated_.push_back({sum, r});
     }
     if (violated_.empty()) return false;
-    std::sort(violated_.begin(), violated_.end(), [](const auto& a, const auto& b) {
-      return a.first != b.first ? a.first > b.first : a.second < b.second;
-    });
+    sortLargestFirst(violated_);
     for (const auto& v : violated_) {
       const auto& row = rows_[v.second];
       bool clash = false;
@@ -273,9 +279,7 @@ private:
       if (reduced > kReducedCost) priced_.push_back({reduced, j});
     }
     if (priced_.empty()) return false;
-    std::sort(priced_.begin(), priced_.end(), [](const auto& a, const auto& b) {
-      return a.first != b.first ? a.first > b.first : a.second < b.second;
-    });
+    sortLargestFirst(priced_);
     if (priced_.size() > kColumnsPerRound) priced_.resize(kColumnsPerRound);
     for (const auto& p : priced_) addColumn(p.second);
     return true;

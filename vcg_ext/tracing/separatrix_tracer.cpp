@@ -4,15 +4,10 @@
 #include "tracing/radix_heap.h"
 
 #include <algorithm>
-#include <stdexcept>
-#include <array>
-#include <cstdint>
-#include <cstring>
 #include <atomic>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
+#include <stdexcept>
 
 namespace fcql {
 namespace {
