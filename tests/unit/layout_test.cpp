@@ -342,20 +342,24 @@ TEST(Layout, SinksShownOutOfReachStayOutOfLaterSearches) {
     path.sinkPort = port;
     return path;
   };
-  // A search from 0 that wanted 3 sinks and found only port 2 ran out of graph: 1 and 3 are
-  // out of its reach.
+  // A search from 0 allowed 3 sinks with k = 3 that found only port 2 ran out of graph: 1 and
+  // 3 are out of its reach.
   memory.note(0, memory.allowedFrom(0, free), 3, {sinkAt(2)});
   EXPECT_TRUE(memory.outOfReach(0, 1));
   EXPECT_TRUE(memory.outOfReach(0, 3));
   EXPECT_FALSE(memory.outOfReach(0, 2));
   EXPECT_EQ(memory.allowedFrom(0, free), (std::vector<char>{0, 0, 1, 0, 0}));
-  // A search that found all it wanted stopped early: it shows nothing out of reach.
+  // A search with k = 1 that found a sink stopped early: it shows nothing out of reach.
   memory.note(1, memory.allowedFrom(1, free), 1, {sinkAt(0)});
   for (int q = 0; q < 5; ++q) EXPECT_FALSE(memory.outOfReach(1, q));
-  // A later round, port 1 taken meanwhile: 0's search finds nothing now; what was out of reach
-  // stays so, and 2 joins it.
+  // A later round, port 1 taken meanwhile: 0's search (k = 1, only 2 allowed) finds nothing
+  // now; what was out of reach stays so, and 2 joins it.
   const std::vector<char> fewer = {1, 0, 1, 1, 0};
   memory.note(0, memory.allowedFrom(0, fewer), 1, {});
   for (int q : {1, 2, 3}) EXPECT_TRUE(memory.outOfReach(0, q)) << q;
   EXPECT_EQ(memory.allowedFrom(0, free), (std::vector<char>(5, 0)));
+  // k larger than the sinks allowed: a search from 3 that found both it was allowed shows
+  // nothing out of reach.
+  memory.note(3, memory.allowedFrom(3, fewer), 10, {sinkAt(0), sinkAt(2)});
+  for (int q = 0; q < 5; ++q) EXPECT_FALSE(memory.outOfReach(3, q)) << q;
 }

@@ -86,21 +86,19 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     BarrierSet barriers = barriersOf(graph, layout);
     std::vector<int> sources;
     std::vector<SearchOptions> options;
-    std::vector<int> wanted;
     for (int p : dangling) {
       SearchOptions o;
       o.maxSinks = graph.parameters().k;
       o.barriers = &barriers;
       o.sinkAllowed = outOfReach.allowedFrom(p, free);
-      const int allowed = int(std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1));
-      if (allowed == 0) continue;
+      if (std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1) == 0) continue;
       sources.push_back(p);
-      wanted.push_back(std::min(o.maxSinks, allowed));
       options.push_back(std::move(o));
     }
     if (sources.empty()) break;
     auto searches = traceFromPorts(graph, sources, options);
-    for (std::size_t i = 0; i < searches.size(); ++i) outOfReach.note(sources[i], options[i].sinkAllowed, wanted[i], searches[i]);
+    for (std::size_t i = 0; i < searches.size(); ++i)
+      outOfReach.note(sources[i], options[i].sinkAllowed, options[i].maxSinks, searches[i]);
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
@@ -198,8 +196,10 @@ std::vector<char> SinksOutOfReach::allowedFrom(int port, const std::vector<char>
   return allowed;
 }
 
-void SinksOutOfReach::note(int port, const std::vector<char>& allowed, int wanted, const std::vector<TracedPath>& found) {
-  if (int(found.size()) >= wanted) return;  // stopped early: nothing shown out of reach
+void SinksOutOfReach::note(int port, const std::vector<char>& allowed, int maxSinks, const std::vector<TracedPath>& found) {
+  // Stopped at its k-th sink: nothing shown out of reach. (Fewer than k found, all it was
+  // allowed among them, also shows nothing: every one found is cleared below.)
+  if (int(found.size()) >= maxSinks) return;
   std::vector<char>& far = far_.at(port);
   if (far.empty()) far.assign(allowed.size(), 0);
   for (std::size_t q = 0; q < allowed.size(); ++q)

@@ -84,9 +84,9 @@ public:
   /// The sinks a search from `port` may stop at: the `free` ports but itself and those out of
   /// its reach.
   std::vector<char> allowedFrom(int port, const std::vector<char>& free) const;
-  /// Takes note of a search from `port` that was allowed `allowed`, wanted `wanted` sinks and
-  /// found the paths `found`.
-  void note(int port, const std::vector<char>& allowed, int wanted, const std::vector<TracedPath>& found);
+  /// Takes note of a search from `port` that was allowed the sinks `allowed`, could stop after
+  /// `maxSinks` of them (k) and found the paths `found`.
+  void note(int port, const std::vector<char>& allowed, int maxSinks, const std::vector<TracedPath>& found);
   bool outOfReach(int port, int sink) const { return !far_[port].empty() && far_[port][sink]; }
 
 private:
