@@ -65,6 +65,26 @@ Rows oddCycles(int cycles) {
   return rows;
 }
 
+/// A random program of `n` variables weighing 0.2–3 and `numRows` rows of 2 to `maxSize`
+/// variables drawn from a band of `band` consecutive ones (conflicts are local on a surface).
+void bandedProgram(unsigned seed, int n, int numRows, int band, int maxSize, std::vector<double>& weight, Rows& rows) {
+  std::mt19937 random(seed);
+  weight.resize(n);
+  for (double& w : weight) w = std::uniform_real_distribution<double>(0.2, 3.0)(random);
+  rows.clear();
+  for (int r = 0; r < numRows; ++r) {
+    const int first = std::uniform_int_distribution<int>(0, n - band)(random);
+    std::vector<int> vars;
+    const int size = std::uniform_int_distribution<int>(2, maxSize)(random);
+    while (int(vars.size()) < size) {
+      const int j = first + std::uniform_int_distribution<int>(0, band - 1)(random);
+      if (std::find(vars.begin(), vars.end(), j) == vars.end()) vars.push_back(j);
+    }
+    std::sort(vars.begin(), vars.end());
+    rows.push_back(vars);
+  }
+}
+
 }  // namespace
 
 TEST(SetPacking, MatchesBruteForceOnRandomPrograms) {
@@ -116,22 +136,10 @@ TEST(SetPacking, TheRelaxationWithRowsAndVariablesAddedLazilyIsTheWholeRelaxatio
   // 1200 variables in rows of 2–6 neighbours (a band, as conflicts are local on a surface):
   // the relaxation lp_solve solves with only the rows and variables it needs has the optimum
   // of the relaxation with all of them, and it did need fewer of both.
-  std::mt19937 random(5);
   const int n = 1200;
-  std::vector<double> weight(n);
-  for (double& w : weight) w = std::uniform_real_distribution<double>(0.2, 3.0)(random);
+  std::vector<double> weight;
   Rows rows;
-  for (int r = 0; r < 1800; ++r) {
-    const int first = std::uniform_int_distribution<int>(0, n - 40)(random);
-    std::vector<int> vars;
-    const int size = std::uniform_int_distribution<int>(2, 6)(random);
-    while (int(vars.size()) < size) {
-      const int j = first + std::uniform_int_distribution<int>(0, 39)(random);
-      if (std::find(vars.begin(), vars.end(), j) == vars.end()) vars.push_back(j);
-    }
-    std::sort(vars.begin(), vars.end());
-    rows.push_back(vars);
-  }
+  bandedProgram(5, n, 1800, 40, 6, weight, rows);
   SetPackingOptions options;
   options.stallSeconds = 0.3;
   const SetPackingResult r = solveSetPacking(weight, rows, options);
@@ -205,16 +213,10 @@ TEST(SetPacking, TheGreedySelectionTakesTheHeaviestFreeVariableFirst) {
 TEST(SetPacking, TheWeightsUnitsDoNotMatter) {
   // The same random program with its weights scaled by 1e-12 and 1e12: the same selection, and
   // objective and bound scaled alike (lp_solve's tolerances are absolute; the solver is not).
-  std::mt19937 random(3);
   const int n = 300;
-  std::vector<double> weight(n);
-  for (double& w : weight) w = std::uniform_real_distribution<double>(0.2, 3.0)(random);
+  std::vector<double> weight;
   Rows rows;
-  for (int r = 0; r < 450; ++r) {
-    const int first = std::uniform_int_distribution<int>(0, n - 20)(random);
-    std::vector<int> vars = {first, first + 1 + std::uniform_int_distribution<int>(0, 18)(random)};
-    rows.push_back(vars);
-  }
+  bandedProgram(3, n, 450, 20, 2, weight, rows);
   SetPackingOptions options;
   options.stallSeconds = 0.3;
   const SetPackingResult base = solveSetPacking(weight, rows, options);
