@@ -77,7 +77,7 @@ std::string candidatesObj(const SeparatrixGraph& h) {
 
 int traceCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads"}, {"quiet"});
-  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   TracingParameters params = readTracingParameters(cl);
   StatsJson stats;
@@ -86,7 +86,7 @@ int traceCommand(int argc, char** argv) {
   TraceStage ts = runTraceStage(fs, params, stats, quiet);
   const auto outputStart = Clock::now();
   OutputDir out(cl.value("out"));
-  saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
+  out.write("field.ffield", [&](const std::string& path) { saveFField(fs.mesh, fs.field, path); });
   out.writeText("candidates.obj", candidatesObj(ts.h));
   recordTotalTime(stats, start, outputStart);
   out.writeText("stats.json", stats.toString());

@@ -47,6 +47,9 @@ struct QuadrangulationOptions {
   /// the result says how often and how close it came.
   double maxDeviation = 0.01;
   int maxRefinements = 4;
+  /// A refinement that would give more quads than this (estimated from the last pass) is not
+  /// made: the result keeps the last mesh and says why.
+  long maxQuads = 20000000;
 };
 
 /// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
