@@ -54,8 +54,10 @@ if [ ! -f "$orig" ]; then
   (cd "$work" && apt-get "${PRIVATE_APT[@]}" source --download-only -qq "meshlab=${version}-2" >/dev/null 2>&1) || true
 fi
 if [ ! -f "$orig" ]; then
-  echo "meshlab2025_sdk: apt-get source gave no orig tarball; taking it from the Debian pool" >&2
-  curl -fsSL -o "$orig" "http://deb.debian.org/debian/pool/main/m/meshlab/meshlab_${version}.orig.tar.xz"
+  echo "meshlab2025_sdk: 'apt-get source meshlab' (sid) through this machine's configured Debian archive gave" \
+       "no meshlab_${version}.orig.tar.xz; check that the archive is reachable and still carries meshlab ${version}," \
+       "or put the tarball (sha256 $orig_sha256) into $cache/ and run this script again" >&2
+  exit 1
 fi
 echo "$orig_sha256  $orig" | sha256sum -c --quiet - || {
   echo "meshlab2025_sdk: the orig tarball's sha256 differs from the one this script was written for" >&2; exit 1; }
