@@ -15,15 +15,19 @@ namespace fcql {
 LayoutParameters readLayoutParameters(const CommandLine& cl) {
   LayoutParameters p;
   p.ilpTimeLimit = cl.number("ilp-time-limit", p.ilpTimeLimit, 1.0, 86400.0);
-  p.ilpStall = cl.number("ilp-stall", p.ilpStall, 0.0, 86400.0);
+  p.ilpStallNodes = cl.integer("ilp-stall", int(p.ilpStallNodes), 0, 100000000);
   return p;
 }
 
 LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const LayoutParameters& params, StatsJson& stats, bool quiet) {
   LayoutStage ls;
-  progress(quiet, "solving the layout (0-1 programs with lp_solve, time limit " + std::to_string(int(params.ilpTimeLimit)) + " s each)");
+  progress(quiet, "solving the layout (0-1 programs with lp_solve, branch and bound until " + std::to_string(params.ilpStallNodes) +
+                      " nodes bring nothing better; safety time limit " + std::to_string(int(params.ilpTimeLimit)) + " s each)");
   ls.layout = solveLayout(*ts.graph, ts.h, params);
   for (const auto& m : ls.layout.messages) progress(quiet, "note: " + m);
+  if (ls.layout.ilpTimeLimited > 0)
+    progress(quiet, "warning: the 0-1 programs' time limit (--ilp-time-limit, a safety stop) cut " +
+                        std::to_string(ls.layout.ilpTimeLimited) + " parts short: this layout depends on the machine's speed");
   auto cutStart = std::chrono::steady_clock::now();
   ls.patches = buildPatchLayout(*ts.graph, ls.layout);
   ClosingReport closing;
@@ -62,6 +66,8 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
   stats.setCounts("layout.corner_histogram", corners);
   stats.set("layout.ilp_time_limit_hit", ls.layout.ilpTimeLimitHit);
   stats.set("layout.ilp_stalled", ls.layout.ilpStalled);
+  stats.set("layout.ilp_time_limited", ls.layout.ilpTimeLimited);
+  stats.set("params.ilp_stall_nodes", int(params.ilpStallNodes));
   stats.set("time_s.ilp", ls.layout.ilpSeconds);
   stats.set("time_s.cycle_tracing", ls.layout.cycleTracingSeconds);
   stats.set("time_s.propagation", ls.layout.propagationSeconds);

@@ -66,6 +66,10 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
     progress(quiet, "zero chains: " + std::to_string(r.splitPatches) + " patches split by Catmull-Clark steps (" +
                         std::to_string(r.splitRounds) + " rounds)");
   stats.set("quad.zero_chain_splits", r.splitPatches);
+  stats.set("quad.time_limited_parts", r.timeLimitedParts);
+  if (r.timeLimitedParts > 0)
+    progress(quiet, "warning: the side-length time limit (--ilp-time-limit, a safety stop) cut " +
+                        std::to_string(r.timeLimitedParts) + " parts short: these quads depend on the machine's speed");
   stats.set("quad.polygon_patches", r.polygonPatches);
   stats.set("quad.outside_points", qs.mesh.outsidePoints);
   if (qs.mesh.outsidePoints > 0)

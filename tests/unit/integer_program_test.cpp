@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <thread>
+
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -75,6 +78,7 @@ TEST(IntegerProgram, TimeLimitIsHonoured) {
   auto r = ip.solve(1);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 4.0);
+  if (r.status != IntegerProgram::Status::Optimal) EXPECT_TRUE(r.timeLimitReached) << "a safety stop is flagged";
   if (r.hasSolution()) {
     for (int i = 0; i < n; ++i)
       for (int d : {1, 7, 31, 97}) EXPECT_LE(r.values[i] + r.values[(i + d) % n], 1.0 + 1e-9);
@@ -152,10 +156,12 @@ TEST(IntegerProgram, StopsWhenTheBestSolutionStopsImproving) {
   std::vector<std::pair<int, double>> terms;
   for (int j = 0; j < n; ++j) terms.push_back({ip.addBinary(1 + 0.001 * j), 2.0});
   ip.addConstraint(terms, Sense::LessEqual, n);
-  ip.setStallLimit(0.5);
+  ip.setStallNodes(2000);
   const auto r = ip.solve(120);
   ASSERT_EQ(r.status, IntegerProgram::Status::Stalled) << r.message;
   ASSERT_TRUE(r.hasSolution());
+  EXPECT_FALSE(r.timeLimitReached);
+  EXPECT_GE(r.nodes, 2000) << "the stall is counted in nodes";
   EXPECT_LT(r.seconds, 30) << "stopped by the stall limit, long before the time limit";
   double items = 0, value = 0;
   for (int j = 0; j < n; ++j) {
@@ -165,4 +171,31 @@ TEST(IntegerProgram, StopsWhenTheBestSolutionStopsImproving) {
   }
   EXPECT_EQ(items, 20) << "a best solution takes as many items as fit";
   EXPECT_NEAR(r.objective, value, 1e-9);
+
+  // Work, not time: with both cores kept busy by two spinning threads, the same program stops
+  // at the same node with the same solution.
+  std::atomic<bool> busy{true};
+  std::vector<std::thread> hogs;
+  for (int t = 0; t < 2; ++t)
+    hogs.emplace_back([&busy] {
+      volatile double x = 1;
+      while (busy.load(std::memory_order_relaxed)) x = x * 1.0000001 + 1e-9;
+    });
+  const auto again = ip.solve(120);
+  busy = false;
+  for (auto& h : hogs) h.join();
+  EXPECT_EQ(again.status, r.status);
+  EXPECT_EQ(again.nodes, r.nodes);
+  EXPECT_EQ(again.values, r.values);
+
+  // A node budget stops it too, keeping the best solution (status WorkLimit).
+  IntegerProgram budget = ip;
+  budget.setStallNodes(0);
+  budget.setNodeLimit(300);
+  const auto b = budget.solve(120);
+  ASSERT_EQ(b.status, IntegerProgram::Status::WorkLimit) << b.message;
+  EXPECT_TRUE(b.hasSolution());
+  EXPECT_GE(b.nodes, 300);
+  EXPECT_LT(b.nodes, 400) << "stopped soon after the budget";
+  EXPECT_EQ(budget.solve(120).values, b.values);
 }

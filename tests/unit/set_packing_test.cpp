@@ -141,7 +141,7 @@ TEST(SetPacking, TheRelaxationWithRowsAndVariablesAddedLazilyIsTheWholeRelaxatio
   Rows rows;
   bandedProgram(5, n, 1800, 40, 6, weight, rows);
   SetPackingOptions options;
-  options.stallSeconds = 0.3;
+  options.stallNodes = 200;
   const SetPackingResult r = solveSetPacking(weight, rows, options);
   ASSERT_TRUE(r.hasSolution()) << r.message;
   EXPECT_NEAR(r.bound, relaxationOptimum(rows, weight), 1e-6);
@@ -189,7 +189,7 @@ TEST(SetPacking, BranchAndBoundStopsWhenItFindsNothingBetter) {
   const int cycles = 150;
   const Rows rows = oddCycles(cycles);
   SetPackingOptions options;
-  options.stallSeconds = 0.3;
+  options.stallNodes = 200;
   options.timeLimitSeconds = 120;
   const SetPackingResult r = solveSetPacking(std::vector<double>(5 * cycles, 1.0), rows, options);
   ASSERT_EQ(r.status, IntegerProgram::Status::Stalled) << r.message;
@@ -218,7 +218,7 @@ TEST(SetPacking, TheWeightsUnitsDoNotMatter) {
   Rows rows;
   bandedProgram(3, n, 450, 20, 2, weight, rows);
   SetPackingOptions options;
-  options.stallSeconds = 0.3;
+  options.stallNodes = 200;
   const SetPackingResult base = solveSetPacking(weight, rows, options);
   ASSERT_TRUE(base.hasSolution()) << base.message;
   for (double scale : {1e-12, 1e12}) {

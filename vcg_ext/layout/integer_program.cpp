@@ -33,6 +33,7 @@ const char* toString(IntegerProgram::Status status) {
     case IntegerProgram::Status::Optimal: return "optimal";
     case IntegerProgram::Status::TimeLimit: return "time limit reached, best solution found kept";
     case IntegerProgram::Status::Stalled: return "best solution stopped improving, kept";
+    case IntegerProgram::Status::WorkLimit: return "node budget reached, best solution found kept";
     case IntegerProgram::Status::Infeasible: return "infeasible";
     case IntegerProgram::Status::Unbounded: return "unbounded";
     default: return "failed";
@@ -42,6 +43,8 @@ const char* toString(IntegerProgram::Status status) {
 namespace {
 
 constexpr double kMinRelaxationSeconds = 60;
+/// Rounds of solveByRounding that round one variable per constraint; then all the rest at once.
+constexpr int kGradualRounds = 50;
 
 /// The result for a program without variables: nothing to solve.
 IntegerProgram::Result emptyProgramResult() {
@@ -106,21 +109,33 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   if (!lp) return result;
   setTimeLimit(lp.get(), timeLimitSeconds);
   set_mip_gap(lp.get(), FALSE, relativeGap_);
-  StallWatch watch;
-  watch.limitSeconds = stallSeconds_;
-  watchForStall(lp.get(), watch);
+  BranchAndBoundWatch watch;
+  watch.stallNodes = stallNodes_;
+  watch.nodeLimit = nodeLimit_;
+  watchBranchAndBound(lp.get(), watch);
   int ret = ::solve(lp.get());
-  if (watch.stopped && (ret == SUBOPTIMAL || ret == USERABORT) && get_solutioncount(lp.get()) > 0) {
+  result.nodes = long(get_total_nodes(lp.get()));
+  if (watch.stopped() && (ret == SUBOPTIMAL || ret == USERABORT) && get_solutioncount(lp.get()) > 0) {
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.status = Status::Stalled;
+    result.status = watch.stalled ? Status::Stalled : Status::WorkLimit;
     result.values.assign(n, 0.0);
     get_variables(lp.get(), result.values.data());
     result.objective = get_objective(lp.get());
-    char stall[32];
-    std::snprintf(stall, sizeof stall, "%g", stallSeconds_);
-    result.message = std::string("lp_solve's best solution did not improve for ") + stall + " s; it is kept (not proven optimal)";
+    result.message = watch.stalled ? "lp_solve's best solution did not improve for " + std::to_string(stallNodes_) +
+                                         " branch-and-bound nodes; it is kept (not proven optimal)"
+                                   : "lp_solve reached its budget of " + std::to_string(nodeLimit_) +
+                                         " branch-and-bound nodes; the best solution found is kept";
     return result;
   }
+  if (watch.stopped() && ret == USERABORT) {  // the budget ran out before any solution
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.status = Status::Failed;
+    result.message = "lp_solve reached its budget of " + std::to_string(nodeLimit_) +
+                     " branch-and-bound nodes before finding any solution";
+    return result;
+  }
+  // Neither work limit stopped it: SUBOPTIMAL and TIMEOUT mean the safety time limit.
+  result.timeLimitReached = ret == SUBOPTIMAL || ret == TIMEOUT;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto readSolution = [&]() {
     result.values.assign(n, 0.0);
@@ -141,14 +156,16 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
     case SUBOPTIMAL:
       result.status = Status::TimeLimit;
       readSolution();
-      result.message = "lp_solve stopped before proving optimality; the best solution found is kept";
+      result.message = "lp_solve reached the time limit (a safety stop: this result depends on the machine's speed); "
+                       "the best solution found is kept";
       break;
     case TIMEOUT:
       // lp_solve reports TIMEOUT both with and without an improved solution.
       if (get_solutioncount(lp.get()) > 0) {
         result.status = Status::TimeLimit;
         readSolution();
-        result.message = "lp_solve reached the time limit; the best solution found is kept";
+        result.message = "lp_solve reached the time limit (a safety stop: this result depends on the machine's "
+                         "speed); the best solution found is kept";
       } else {
         result.status = Status::Failed;
         result.message = "lp_solve reached the time limit before finding any solution";
@@ -260,7 +277,11 @@ IntegerProgram::Result IntegerProgram::solveByRounding(double timeLimitSeconds) 
     std::sort(fractional.begin(), fractional.end());
     // Two variables of one constraint are not rounded in the same round: the relaxation,
     // solved again, moves the others of the constraint to follow the first.
-    const bool allNow = elapsed() >= timeLimitSeconds;
+    // After kGradualRounds rounds (counted, so that the result is the same on any machine), or
+    // once the safety time limit is spent, everything left is rounded at once.
+    const bool outOfTime = elapsed() >= timeLimitSeconds;
+    result.timeLimitReached = result.timeLimitReached || outOfTime;
+    const bool allNow = outOfTime || round >= kGradualRounds;
     ++batch;
     for (const auto& f : fractional) {
       const int j = f.second;

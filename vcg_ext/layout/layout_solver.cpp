@@ -32,7 +32,8 @@ void noteSelection(Layout& layout, const SelectionResult& r) {
   layout.ilpSeconds += r.seconds;
   layout.iterations += 1;
   layout.ilpStalled += r.stalledParts;
-  if (r.status == IntegerProgram::Status::TimeLimit) layout.ilpTimeLimitHit = true;
+  layout.ilpTimeLimited += r.timeLimitedParts;
+  if (r.timeLimitedParts > 0) layout.ilpTimeLimitHit = true;
   if (r.status == IntegerProgram::Status::TimeLimit || r.status == IntegerProgram::Status::Stalled) {
     layout.messages.push_back("0-1 program " + std::to_string(layout.iterations) + ": " + r.message);
   }
@@ -43,7 +44,7 @@ void noteSelection(Layout& layout, const SelectionResult& r) {
 void LayoutParameters::validate() const {
   if (!(ilpTimeLimit >= 1) || !std::isfinite(ilpTimeLimit))
     throw std::invalid_argument("ilp_time_limit must be at least 1 second");
-  if (!(ilpStall >= 0) || !std::isfinite(ilpStall)) throw std::invalid_argument("ilp_stall must be 0 or more seconds");
+  if (ilpStallNodes < 0) throw std::invalid_argument("ilp_stall must be 0 or more nodes");
   if (maxIterations < 1) throw std::invalid_argument("the solving cycle needs at least one iteration");
 }
 
@@ -62,7 +63,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   const int numPorts = int(graph.ports().size());
 
   // 1. The first 0-1 program on all candidates.
-  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStall);
+  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStallNodes);
   noteSelection(layout, first);
   for (int a : first.selected) {
     const auto& c = candidates.arcs[a];
@@ -102,7 +103,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
-    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStall);
+    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStallNodes);
     noteSelection(layout, r);
     if (r.selected.empty()) break;
     for (int a : r.selected) {

@@ -22,14 +22,16 @@
 namespace fcql {
 
 struct LayoutParameters {
-  double ilpTimeLimit = 60;  ///< seconds per 0-1 program (≥ 1)
-  /// Branch and bound stops once its best solution has not improved for this many seconds
-  /// (0: only the time limit stops it). See IntegerProgram::setStallLimit and
-  /// solveSetPacking: on the selection it starts from the relaxation fixed by parts, within
-  /// 1% of the LP bound; on the shared meshes and 88 runs of a parameter sweep it settled
-  /// every 0-1 program within 0.6 s but the dragon's first, where it found nothing better in
-  /// 10 s.
-  double ilpStall = 1;
+  /// Seconds per 0-1 program (≥ 1): a safety stop only. Where it is reached the selection
+  /// depends on the machine's speed, and the log and Layout::ilpTimeLimitHit say so.
+  double ilpTimeLimit = 60;
+  /// Branch and bound stops once this many of its nodes brought no better solution (0: only
+  /// the time limit stops it). Counted in nodes, not seconds, so that the same input gives the
+  /// same layout on any machine. See IntegerProgram::setStallNodes and solveSetPacking: on
+  /// the selection it starts from the relaxation fixed by parts, within 1% of the LP bound;
+  /// the shared meshes and a parameter sweep settle every 0-1 program before it, except the
+  /// dragon's first (33 nodes in the second it took on the project's machine).
+  long ilpStallNodes = 50;
   int maxIterations = 20;    ///< bound on the solving cycle
   bool propagate = true;     ///< step 3
 
@@ -56,6 +58,7 @@ struct Layout {
   int deadEndsRemoved = 0;        ///< separatrices dropped by removeDeadEnds
   bool ilpTimeLimitHit = false;
   int ilpStalled = 0;             ///< parts of 0-1 programs stopped at the stall limit
+  int ilpTimeLimited = 0;         ///< parts the safety time limit cut short
   std::vector<std::string> messages; ///< solver notes worth logging
   double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0;
 };

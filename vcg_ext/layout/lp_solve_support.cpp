@@ -6,27 +6,32 @@
 namespace fcql {
 namespace {
 
-void __WINAPI noteImprovement(lprec*, void* handle, int) {
-  auto* watch = static_cast<StallWatch*>(handle);
+void __WINAPI noteImprovement(lprec* lp, void* handle, int) {
+  auto* watch = static_cast<BranchAndBoundWatch*>(handle);
   watch->haveSolution = true;
-  watch->lastImprovement = std::chrono::steady_clock::now();
+  watch->lastImprovementNode = long(get_total_nodes(lp));
 }
 
-int __WINAPI stallReached(lprec*, void* handle) {
-  auto* watch = static_cast<StallWatch*>(handle);
-  if (!watch->haveSolution) return FALSE;
-  const double idle = std::chrono::duration<double>(std::chrono::steady_clock::now() - watch->lastImprovement).count();
-  if (idle < watch->limitSeconds) return FALSE;
-  watch->stopped = true;
-  return TRUE;
+int __WINAPI workLimitReached(lprec* lp, void* handle) {
+  auto* watch = static_cast<BranchAndBoundWatch*>(handle);
+  const long nodes = long(get_total_nodes(lp));
+  if (watch->nodeLimit > 0 && nodes >= watch->nodeLimit) {
+    watch->nodeLimitReached = true;
+    return TRUE;
+  }
+  if (watch->stallNodes > 0 && watch->haveSolution && nodes - watch->lastImprovementNode >= watch->stallNodes) {
+    watch->stalled = true;
+    return TRUE;
+  }
+  return FALSE;
 }
 
 }  // namespace
 
-void watchForStall(lprec* lp, StallWatch& watch) {
-  if (!(watch.limitSeconds > 0)) return;
+void watchBranchAndBound(lprec* lp, BranchAndBoundWatch& watch) {
+  if (watch.stallNodes <= 0 && watch.nodeLimit <= 0) return;
   put_msgfunc(lp, noteImprovement, &watch, MSG_MILPFEASIBLE | MSG_MILPBETTER);
-  put_abortfunc(lp, stallReached, &watch);
+  put_abortfunc(lp, workLimitReached, &watch);
 }
 
 void setTimeLimit(lprec* lp, double seconds) {

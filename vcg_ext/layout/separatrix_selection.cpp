@@ -47,7 +47,7 @@ std::vector<std::vector<int>> withoutContainedRows(const std::vector<std::vector
 }  // namespace
 
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
-                                   double stallSeconds) {
+                                   long stallNodes) {
   SelectionResult out;
   const auto start = std::chrono::steady_clock::now();  // the program's construction counts too
   auto free = [&](int p) { return portFree.empty() || (p >= 0 && p < int(portFree.size()) && portFree[p]); };
@@ -142,11 +142,11 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
     // layouts (kitten at φ 25°: 126 patches 0.025% below the optimum's 83), and where branch
     // and bound cannot settle a part the stall limit stops it.
     options.relativeGap = 1e-6;
-    options.stallSeconds = stallSeconds;
+    options.stallNodes = stallNodes;
     options.timeLimitSeconds = secondsLeft;
     const SetPackingResult r = solveSetPacking(localWeight, localRows, options);
     ++programs;
-    if (r.status == IntegerProgram::Status::TimeLimit || !r.hasSolution()) ++timedOut;
+    if (r.timeLimitReached || !r.hasSolution()) ++timedOut;
     if (r.status == IntegerProgram::Status::Stalled) ++stalled;
     if (r.hasSolution() && r.status != IntegerProgram::Status::Optimal)
       worstGap = std::max(worstGap, (r.bound - r.objective) / std::max(1.0, std::abs(r.bound)));
@@ -159,6 +159,7 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.stalledParts = stalled;
+  out.timeLimitedParts = timedOut;
   // The greedy selection can beat lp_solve's where lp_solve stopped early, or by less than the
   // 10⁻⁶ gap on a part it settled; the status says whether lp_solve stopped early.
   out.status = timedOut > 0 ? IntegerProgram::Status::TimeLimit
@@ -167,13 +168,11 @@ SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<c
   if (out.status != IntegerProgram::Status::Optimal) {
     auto num = [](int k) { return std::to_string(k); };
     std::string stall;
-    if (stalled > 0) {
-      char s[32];
-      std::snprintf(s, sizeof s, "%g", stallSeconds);
-      stall = ", stopped after " + std::string(s) + " s without a better solution: " + num(stalled);
-    }
+    if (stalled > 0)
+      stall = ", stopped after " + std::to_string(stallNodes) + " nodes without a better solution: " + num(stalled);
     out.message = "lp_solve had " + num(programs) + " of " + num(parts) +
-                  " independent parts to solve; time limit reached (or no solution found): " + num(timedOut) + stall +
+                  " independent parts to solve; safety time limit reached (or no solution found): " + num(timedOut) +
+                  stall +
                   "; " +
                   (usedGreedy ? "the greedy selection was better on " + num(usedGreedy)
                               : std::string("the best solutions found are kept"));

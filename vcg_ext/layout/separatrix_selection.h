@@ -20,14 +20,16 @@ struct SelectionResult {
   int dominated = 0;   ///< variables left out because another one dominates them
   int constraints = 0; ///< rows of the program lp_solve gets (after leaving those out)
   int stalledParts = 0; ///< parts whose branch and bound stopped at the stall limit
+  int timeLimitedParts = 0; ///< parts the safety time limit cut short (the selection then depends on the machine)
 };
 
 /// `portFree[p]` = 1 if port p may receive a separatrix (empty: all ports). Arcs touching a
 /// port that is not free are left out. Throws std::runtime_error with lp_solve's reason if no
 /// solution could be found (the empty selection is always feasible, so this means a solver
-/// failure). Its conflict rows are graph H's tangential cliques. Branch and bound on each part stops once its best solution has not improved for
-/// `stallSeconds` (0: never), and all parts together within `timeLimitSeconds`.
+/// failure). Its conflict rows are graph H's tangential cliques. Branch and bound on each part stops once `stallNodes` nodes
+/// brought no better solution (0: never), which gives the same selection on any machine; all
+/// parts together stop within `timeLimitSeconds` (a safety stop, counted in timeLimitedParts).
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
-                                   double stallSeconds = 0);
+                                   long stallNodes = 0);
 
 }  // namespace fcql

@@ -14,6 +14,9 @@
 namespace fcql {
 namespace {
 
+/// Step 2's parts stop after this many times options.stallNodes nodes without a better solution.
+constexpr long kPartStallFactor = 200;
+
 constexpr double kViolation = 1e-7;  // a row summing to more than 1 + this is violated
 constexpr double kIntegral = 1e-6;   // a relaxed value this close to 0 or 1 is taken as such
 constexpr double kReducedCost = 1e-9;  // a variable left out prices in above this
@@ -356,7 +359,9 @@ std::vector<char> fixByParts(const std::vector<double>& weight, const std::vecto
     IntegerProgram ip;
     ip.setMaximize(true);
     ip.setRelativeGap(options.relativeGap);
-    ip.setStallLimit(options.stallSeconds);
+    // The parts are small: lp_solve runs thousands of their nodes a second, so they get
+    // kPartStallFactor times the stall of step 3's branch and bound on the whole program.
+    ip.setStallNodes(options.stallNodes * kPartStallFactor);
     for (int j : part) local[j] = ip.addBinary(weight[j]);
     for (int r : rowsOfPart[root]) {
       std::vector<std::pair<int, double>> terms;
@@ -364,8 +369,12 @@ std::vector<char> fixByParts(const std::vector<double>& weight, const std::vecto
         if (state[j] == 2) terms.push_back({local[j], 1.0});
       ip.addConstraint(terms, IntegerProgram::Sense::LessEqual, 1.0);
     }
-    if (secondsLeft() <= 0) continue;  // no time left: what can be taken is taken below
+    if (secondsLeft() <= 0) {  // no time left (a safety stop): what can be taken is taken below
+      result.timeLimitReached = true;
+      continue;
+    }
     const IntegerProgram::Result r = ip.solve(secondsLeft());
+    result.timeLimitReached = result.timeLimitReached || r.timeLimitReached;
     if (r.hasSolution())
       for (int j : part) chosen[j] = r.values[local[j]] > 0.5;
     // else the part stays out: what can be taken is taken below
@@ -410,7 +419,10 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
 
   // Step 1: the LP relaxation.
   LazyRelaxation relaxation(unit, rows);
-  if (!relaxation.solve(secondsLeft, result.message)) return result;
+  if (!relaxation.solve(secondsLeft, result.message)) {
+    result.timeLimitReached = secondsLeft() <= 0;
+    return result;
+  }
   result.relaxationRounds = relaxation.rounds();
   result.rowsInRelaxation = relaxation.rowsInModel();
   result.columnsInRelaxation = relaxation.columnsInModel();
@@ -432,7 +444,9 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
 
   if (secondsLeft() <= 0) {
     result.status = IntegerProgram::Status::TimeLimit;
-    result.message = "the relaxation fixed by parts, " + belowBound() + " below the LP bound; no time left to improve it";
+    result.timeLimitReached = true;
+    result.message = "the relaxation fixed by parts, " + belowBound() +
+                     " below the LP bound; the safety time limit left no time to improve it";
     return result;
   }
 
@@ -448,11 +462,10 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
   lprec* lp = whole.get();
   set_mip_gap(lp, FALSE, options.relativeGap);
   set_obj_bound(lp, result.objective / scale);  // only better selections are accepted
-  StallWatch watch;
-  watch.limitSeconds = options.stallSeconds;
+  BranchAndBoundWatch watch;
+  watch.stallNodes = options.stallNodes;
   watch.haveSolution = true;  // step 2's
-  watch.lastImprovement = Clock::now();
-  watchForStall(lp, watch);
+  watchBranchAndBound(lp, watch);
   setTimeLimit(lp, secondsLeft());
   const int ret = ::solve(lp);
   bool discarded = false;  // branch and bound's selection broke a row (lp_solve's tolerances)
@@ -488,18 +501,16 @@ SetPackingResult solveSetPacking(const std::vector<double>& weight, const std::v
   } else if (ret == OPTIMAL || ret == PRESOLVED || ret == INFEASIBLE) {  // INFEASIBLE: nothing better exists
     result.status = IntegerProgram::Status::Optimal;
     result.message = what + ": proven within " + percent(options.relativeGap) + " of the optimum by branch and bound";
-  } else if (watch.stopped) {
+  } else if (watch.stopped()) {
     result.status = IntegerProgram::Status::Stalled;
-    char stall[32];
-    std::snprintf(stall, sizeof stall, "%g", options.stallSeconds);
-    result.message = what + ", " + belowBound() +
-                     " below the LP bound; branch and bound found nothing better for " + stall +
-                     " s (not proven optimal)";
+    result.message = what + ", " + belowBound() + " below the LP bound; branch and bound found nothing better in " +
+                     std::to_string(options.stallNodes) + " nodes (not proven optimal)";
   } else {
     result.status = IntegerProgram::Status::TimeLimit;
+    result.timeLimitReached = ret == TIMEOUT || ret == SUBOPTIMAL;
     result.message = what + ", " + belowBound() +
                      " below the LP bound; branch and bound stopped (" +
-                     (ret == TIMEOUT || ret == SUBOPTIMAL ? std::string("time limit")
+                     (ret == TIMEOUT || ret == SUBOPTIMAL ? std::string("the safety time limit")
                                                           : "lp_solve code " + std::to_string(ret)) +
                      ", not proven optimal)";
   }

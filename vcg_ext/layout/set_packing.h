@@ -14,8 +14,8 @@
 //  3. If that selection is not within the relative gap of the relaxation's optimum, branch
 //     and bound runs on the whole program with every row, from the relaxation's basis,
 //     accepting only selections better than step 2's, until it proves there is none, its
-//     best has not improved for the stall limit (counted from step 2's selection) or the
-//     time runs out. The better selection is kept.
+//     best has not improved for the stall limit (branch-and-bound nodes, counted from step
+//     2's selection) or the time runs out (a safety stop). The better selection is kept.
 #pragma once
 
 #include "layout/integer_program.h"
@@ -27,8 +27,8 @@ namespace fcql {
 
 struct SetPackingOptions {
   double relativeGap = 1e-3;      ///< a selection this close to the best bound is optimal enough
-  double stallSeconds = 0;        ///< step 3 stops after this long without a better selection (0: never)
-  double timeLimitSeconds = 60;   ///< for all three steps together (at least one second each)
+  long stallNodes = 0;            ///< branch and bound stops after this many nodes without a better selection (0: never)
+  double timeLimitSeconds = 60;   ///< for all three steps together (at least one second each): a safety stop
 };
 
 struct SetPackingResult {
@@ -45,9 +45,10 @@ struct SetPackingResult {
   bool branchAndBound = false;    ///< step 3 ran
   bool warmStarted = false;       ///< step 3 started from the relaxation's basis
   bool improvedByBranchAndBound = false;
+  bool timeLimitReached = false;  ///< the safety time limit cut some step short (the result depends on the machine)
   bool hasSolution() const {
     return status == IntegerProgram::Status::Optimal || status == IntegerProgram::Status::TimeLimit ||
-           status == IntegerProgram::Status::Stalled;
+           status == IntegerProgram::Status::Stalled || status == IntegerProgram::Status::WorkLimit;
   }
 };
 

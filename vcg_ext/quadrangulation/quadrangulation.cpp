@@ -21,7 +21,9 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
   // the counts disagree again on the parts and the splits spread. When the rounds run out,
   // the counts are solved once more without that bound before giving up.
   auto solveLengths = [&](const PatchGraph& graph) {
-    return solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped);
+    SideLengths lengths = solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped);
+    r.timeLimitedParts += lengths.timeLimitedParts;
+    return lengths;
   };
   r.graph = buildPatchGraph(layout);
   r.polygonPatches = splitPolygonPatches(r.graph, layout);

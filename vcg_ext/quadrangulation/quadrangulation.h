@@ -18,6 +18,9 @@ struct QuadrangulationResult {
   QuadMeshReport report;
   int splitRounds = 0;     ///< rounds of zero-chain splits
   int splitPatches = 0;    ///< patches split for zero chains, in all
+  /// Side-length parts the safety time limit cut short, over all rounds: where it is not 0 the
+  /// quads depend on the machine's speed.
+  int timeLimitedParts = 0;
   /// The zero-chain splits had not settled when the rounds ran out, and the side lengths were
   /// then solved once more without the bound on how coarse a segment may be sampled.
   bool stretchBoundDropped = false;

@@ -21,18 +21,19 @@ int SideLengths::sideLength(const PatchGraph& g, int p, int k) const {
 namespace {
 
 constexpr double kUnderWeight = 3.0;
-/// Branch and bound per part: a part of at most kSmallProgramVariables variables gets up to
-/// kSmallProgramSeconds, a larger one kLargeProgramSeconds (lp_solve finds a solution quickly
-/// and then spends its time on proving optimality, which the dragon's parts of thousands of
-/// variables never reach), both within the time left of the whole limit. What branch and
-/// bound holds when stopped depends on timing; a small part is given long enough to finish
-/// (the 111K-face bunny's part of 118 variables takes about 3 s), so that the same input gives
-/// the same quads on every run. Parts it cannot settle in 10 s did not get better in 30 (deckel
-/// at φ = 5° and 25°, kitten at α = 0: soft programs whose LP bound is far below any integer
-/// solution; same quads, 21 s instead of 40–62 s).
+/// Branch and bound per part, in nodes so that the same input gives the same quads on any
+/// machine however busy: a part of at most kSmallProgramVariables variables gets up to
+/// kSmallProgramNodes, a larger one kLargeProgramNodes (lp_solve finds a solution quickly and
+/// then spends its time on proving optimality, which the dragon's parts of thousands of
+/// variables never reach). On the project's machine a small part runs about 6,700 nodes a
+/// second (the dragon's part of 112 variables: 8,610 nodes, 1.3 s, optimal), and the dragon's
+/// parts of 1,300–2,300 variables take 0.5–2.5 s for their 1,500 nodes. With 300 nodes those
+/// parts mostly stopped without any solution, were rounded instead, and their zero chains did
+/// not settle in 8 rounds. The time left of the whole limit stays as a safety stop, reported
+/// when it is reached.
 constexpr int kSmallProgramVariables = 1000;
-constexpr double kSmallProgramSeconds = 10;
-constexpr double kLargeProgramSeconds = 2;
+constexpr long kSmallProgramNodes = 50000;
+constexpr long kLargeProgramNodes = 1500;
 constexpr double kMaxStretch = 1.5;
 
 /// Whether the opposite sides k and k + 2 of ps are one segment each (a hard equality that
@@ -203,12 +204,13 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     // equalities that cannot all hold are made soft: the patches that then disagree are split
     // once more (zero chains).
     bool rounded = false;
-    auto attempt = [&](const IntegerProgram& ip) {
-      const double budget =
-          std::min(limit, ip.numVariables() <= kSmallProgramVariables ? kSmallProgramSeconds : kLargeProgramSeconds);
-      IntegerProgram::Result best = ip.solve(budget);
+    auto attempt = [&](IntegerProgram ip) {
+      ip.setNodeLimit(ip.numVariables() <= kSmallProgramVariables ? kSmallProgramNodes : kLargeProgramNodes);
+      IntegerProgram::Result best = ip.solve(limit);
+      if (best.timeLimitReached) ++out.timeLimitedParts;
       if (best.status == IntegerProgram::Status::Optimal || best.status == IntegerProgram::Status::Infeasible) return best;
       IntegerProgram::Result other = ip.solveByRounding(limit);
+      if (other.timeLimitReached) ++out.timeLimitedParts;
       if (other.hasSolution() && (!best.hasSolution() || other.objective < best.objective - 1e-9)) {
         best = std::move(other);
         rounded = true;
@@ -230,9 +232,12 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
                               " solved by lp_solve" +
                               (out.roundedParts > 0 ? ", " + std::to_string(out.roundedParts) +
                                                           " of them by rounding the LP relaxation (branch and bound "
-                                                          "found nothing better in time)"
+                                                          "found nothing better within its node budget)"
                                                     : "");
   out.message = out.message.empty() ? summary : out.message + " (" + summary + ")";
+  if (out.timeLimitedParts > 0)
+    out.message += "; the safety time limit cut " + std::to_string(out.timeLimitedParts) +
+                   " parts short: these quads depend on the machine's speed";
   out.segments.resize(ns);
   for (int s = 0; s < ns; ++s) out.segments[s] = count[classOf[s]];
   for (int p = 0; p < int(graph.patches.size()); ++p)

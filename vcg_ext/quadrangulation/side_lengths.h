@@ -25,6 +25,7 @@ struct SideLengths {
   int parts = 0;     ///< independent parts of the program
   int programs = 0;  ///< parts that needed lp_solve (the others are single classes)
   int roundedParts = 0;  ///< of those, parts solved by rounding the LP relaxation
+  int timeLimitedParts = 0;  ///< parts the safety time limit cut short (the quads then depend on the machine)
 
   /// Subdivisions along side k of patch p.
   int sideLength(const PatchGraph& g, int p, int k) const;
