@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Set-up, build and run every test (unit tests, CLI end-to-end tests, meshlabserver tests, and
-# the MeshLab 2025.07 / pymeshlab adapter's tests through fcql_pymeshlab_host).
+# Set-up, build and run every test (unit tests, CLI end-to-end tests, meshlabserver tests, the
+# MeshLab 2025.07 adapter's tests through fcql_pymeshlab_host and the real PyMeshLab, the fuzz
+# smoke run), then the unit and CLI tests once more built with AddressSanitizer and
+# UndefinedBehaviorSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -9,5 +11,13 @@ bash scripts/build.sh
 # later runs reuse it.
 cmake -S . -B build -DFCQL_BUILD_PLUGIN_2025=ON >/dev/null
 cmake --build build -j2
-cd build
-ctest --output-on-failure -j2
+(cd build && ctest --output-on-failure -j2)
+# The sanitizer build: the core, fcql and the unit tests (no MeshLab plugin), RelWithDebInfo.
+# Its ctest runs the unit tests and the CLI end-to-end tests (the readers, the layout cut, the
+# quadrangulation, every bad-input class); MeshLab, pymeshlab and fuzz tests are left to the
+# build above.
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFCQL_SANITIZE=ON -DFCQL_BUILD_PLUGIN=OFF >/dev/null
+cmake --build build-sanitize -j2
+cd build-sanitize
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --output-on-failure -j2 -E '^(fuzz|e2e\.meshlab|e2e\.pymeshlab)'

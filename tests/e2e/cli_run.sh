@@ -76,6 +76,21 @@ else
   fail "fcql run --example torus --target-faces 1500 exited non-zero"
 fi
 
+# ---- the same result on any machine: 1, 2 or 8 threads, and both cores kept busy ------------------
+# Every budget that can change a result is counted in work (nodes, rounds), not seconds.
+for t in 1 2 8; do
+  "$fcql" run --example double_torus --threads $t --out "$tmp/threads$t" --quiet || fail "double_torus --threads $t failed"
+done
+busy=()
+for i in 1 2; do timeout 120 sh -c 'while :; do :; done' & busy+=($!); done
+"$fcql" run --example double_torus --threads 2 --out "$tmp/busy" --quiet || fail "double_torus on a busy machine failed"
+kill "${busy[@]}" 2>/dev/null
+for dir in threads2 threads8 busy; do
+  for f in quad.obj separatrices.obj candidates.obj layout.ply field.ffield; do
+    cmp -s "$tmp/threads1/$f" "$tmp/$dir/$f" || fail "double_torus: $f differs between --threads 1 and $dir"
+  done
+done
+
 # ---- bad options: one error line, non-zero exit, no output directory ------------------------------
 expect_error() {  # WHAT ARGS...
   local what=$1
