@@ -86,6 +86,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.refinements", r.refinements);
   stats.set("quad.restored_vertices", r.restoredVertices);
   stats.set("quad.stretch_bound_dropped", r.stretchBoundDropped);
+  stats.set("quad.split_every_patch", r.splitEverything);
   stats.set("quad.target_edge_length", r.targetEdgeLength);
   stats.set("params.smooth", options.smoothing.iterations);
   stats.set("quad.faces", qs.mesh.numQuads());

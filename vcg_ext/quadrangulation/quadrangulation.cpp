@@ -34,12 +34,28 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
       r.lengths = solveLengths(r.graph);
       continue;
     }
+    if (r.splitRounds >= options.maxSplitRounds && !r.splitEverything) {
+      // The last resort, §4.4's worst case: every patch split once more. Each part is then a
+      // quad whose four sides are single segments (two halves of the patch's segments, two
+      // spokes to its centre), so no equality spans several segments and the counts always
+      // agree. A patch without t-junctions becomes four quads around a regular vertex; one with
+      // t-junctions gets an irregular centre, as in the rounds. It also coarsens the grid where
+      // the rounds had refined it, hence only when they fail.
+      std::vector<int> all;
+      for (int p = 0; p < int(r.graph.patches.size()); ++p)
+        if (r.graph.patches[p].active) all.push_back(p);
+      r.splitPatches += int(all.size());
+      r.splitEverything = true;
+      splitPatches(r.graph, layout, all);
+      r.lengths = solveLengths(r.graph);
+      continue;
+    }
     if (r.splitRounds >= options.maxSplitRounds)
       throw std::runtime_error(std::to_string(r.lengths.inconsistentPatches.size()) +
                                " patches still have unequal opposite sides after " +
                                std::to_string(options.maxSplitRounds) +
-                               " rounds of zero-chain splits, even with the side lengths solved once more "
-                               "without the bound on stretching");
+                               " rounds of zero-chain splits, the side lengths solved once more without the bound "
+                               "on stretching, and every patch split once more");
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
@@ -156,6 +172,9 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
     notes.push_back("zero-chain splits did not settle in " + std::to_string(options.maxSplitRounds) +
                     " rounds with every segment sampled at most 1.5 times coarser than the target: that bound was "
                     "dropped, so some quads may be stretched");
+  if (r.splitEverything)
+    notes.push_back("zero chains were left even then: every patch was split once more (the last resort of section "
+                    "4.4), which makes the counts agree (patches with t-junctions get an irregular vertex inside)");
   if (options.maxDeviation <= 0) return notes;
   char line[400];
   const double diagonal = r.deviationLimit / options.maxDeviation;

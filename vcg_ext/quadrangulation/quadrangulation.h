@@ -24,6 +24,9 @@ struct QuadrangulationResult {
   /// The zero-chain splits had not settled when the rounds ran out, and the side lengths were
   /// then solved once more without the bound on how coarse a segment may be sampled.
   bool stretchBoundDropped = false;
+  /// Even then some disagreed, and every patch was split once more (§4.4's worst case), which
+  /// always makes the counts agree.
+  bool splitEverything = false;
   int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
   SmoothingReport smoothing;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
