@@ -649,9 +649,37 @@ placed, sorted and marked on both threads (every node's arcs come from one face,
 thread's buffer; the 111K bunny's graph 2.05 → 1.57 s), the auxiliary points are computed on
 both threads, and a search stops once it has found every sink it may stop at (the rounded box
 at k 30: tracing 1.22 → 0.54 s; same candidates everywhere). CHOLMOD's supernodal Cholesky
-instead of Eigen's simplicial one for the field (Debian's reference BLAS) gave the same field
-but only 18 → 12 s on the 446K bunny and was slower on the bench meshes (fertility 0.23–0.31 →
-0.36–0.42 s): not kept.
+for the field on Debian's reference BLAS gave only 18 → 12 s on the 446K bunny and was slower
+on the bench meshes; with OpenBLAS and its simplicial LDLᵀ for small meshes it pays (below).
+
+Field stage at scale (issue 26, item 4): `fcql field` on the kitten and the bunny after 2–4 and
+1–2 Loop subdivisions (`python3 bench/subdivide.py IN.obj LEVELS OUT.obj`), measured 2026-12-03
+on the same 2-core VM under a load average of 7–8 from other jobs (wall times are about twice an
+idle machine's). *field* is `time_s.field` (generation and analysis) with, in brackets, its two
+factorisations and its 20 MBO solves; *peak* is the maximum resident memory of the whole run.
+
+| mesh | faces | field before (fact. + fact., solves) | peak before | field after (fact. + fact., solves) | peak after | S before / after |
+|---|---:|---|---:|---|---:|---:|
+| kitten ×2 | 59K | 0.83 s (0.20 + 0.21, 0.28) | 97 MB | 0.69 s (0.25 + 0.13, 0.19) | 61 MB | 24 / 24 |
+| bunny ×1 | 111K | 2.15 s (0.63 + 0.51, 0.65) | 178 MB | 1.63 s (0.34 + 0.23, 0.82) | 142 MB | 34 / 34 |
+| kitten ×3 | 237K | 6.21 s (1.88 + 2.04, 1.59) | 391 MB | 3.58 s (0.86 + 0.63, 1.50) | 318 MB | 24 / 24 |
+| bunny ×2 | 446K | 18.0 s (7.04 + 6.72, 2.95) | 743 MB | 8.21 s (2.21 + 1.83, 2.91) | 598 MB | 34 / 34 |
+| kitten ×4 | 947K | 70.1 s (29.4 + 30.5, 7.48) | 1708 MB | 18.4 s (5.39 + 3.61, 6.89) | 1302 MB | 24 / 24 |
+
+Before, Eigen's simplicial LDLᵀ factorised the field's matrix and its MBO-refined twin, each
+almost quadratically in the faces (32M entries in the factor at 947K, 60 s of the 70). Now
+CHOLMOD (AMD ordering, one symbolic analysis for both) factorises them, supernodally on
+OpenBLAS above 120 flops per factor entry (from ~100K faces), with its simplicial LDLᵀ below,
+where that is faster; the matrices are assembled from their diagonal and lower triangle only,
+and the mesh's half-edges are matched by a counting sort instead of a hash map (load of the
+947K kitten 2.6 → 1.3 s). The whole `fcql field` on 947K faces: 73 → 20 s wall, 46 → 12 s of
+CPU. Same fields: the 12 shared meshes keep their singularities (counts and indices) and their
+crosses (largest difference 6·10⁻¹¹°); the bench meshes' field times are the same or lower
+(median of 5: fertility 0.30 → 0.22 s, joint 0.29 → 0.22 s, bunny 0.24 → 0.20 s, the others
+within 0.02 s). What is left at 947K: the two factorisations (15 GFlop each, 34M entries) and
+the 20 MBO solves, each a forward and a backward pass through the factor (~0.3 s); the
+supernodal factor is ~850 MB of the 1.3 GB peak. METIS instead of AMD cuts the factor to 25M
+entries and a factorisation to ~2 s, but CHOLMOD's METIS analysis takes ~7 s here: no gain.
 NOTES
   if [ ${#pictures[@]} -gt 0 ]; then
     echo

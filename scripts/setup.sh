@@ -10,7 +10,11 @@ source "$here/scripts/lib/debian.bash"
 packages=(build-essential cmake pkg-config ca-certificates xz-utils
           meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
           liblpsolve55-dev libgtest-dev xvfb xauth xdotool imagemagick zlib1g-dev python3 time
-          clang libclang-rt-14-dev python3-numpy)
+          clang libclang-rt-14-dev python3-numpy libsuitesparse-dev libopenblas0-serial)
+# libsuitesparse-dev: CHOLMOD, the sparse Cholesky of the cross field. libopenblas0-serial: an
+# optimised BLAS behind CHOLMOD's supernodal factorisation (Debian makes it the default
+# libblas.so.3 over the reference BLAS; serial, so runs stay reproducible and do not compete
+# with fcql's own threads).
 
 install_missing_packages setup "${packages[@]}"
 

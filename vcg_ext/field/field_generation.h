@@ -4,7 +4,7 @@
 // frame) minimising a smoothness energy built with the discrete Levi-Civita connection across
 // edges, plus a soft alignment to the principal curvature directions weighted by their
 // anisotropy, with hard alignment of faces incident to sharp edges (dihedral angle above a
-// threshold) and to border edges. One sparse Hermitian solve (Eigen), a few normalising
+// threshold) and to border edges. One sparse Hermitian solve (CHOLMOD), a few normalising
 // refinement steps, then normalisation. See field_generation.cpp for the formulas.
 //
 // Sharp edges constrain the field only where they form feature lines: runs of sharp edges that

@@ -5,17 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdint>
 #include <limits>
 #include <sstream>
-#include <unordered_map>
 
 namespace fcql {
 namespace {
-
-std::uint64_t directedKey(int a, int b) {
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
 
 std::string faceName(int f) { return "face " + std::to_string(f); }
 
@@ -82,30 +76,46 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     edgeLengthSum += (p1 - p0).norm() + (p2 - p1).norm() + (p0 - p2).norm();
   }
 
-  // Half-edge matching.
-  std::unordered_map<std::uint64_t, int> halfEdge;  // directed (a,b) -> f*3+i
-  halfEdge.reserve(std::size_t(nf) * 3 * 2);
-  std::unordered_map<std::uint64_t, int> undirectedUses;
+  // Half-edges grouped by their origin vertex (a counting sort, in face order): half-edge
+  // h = 3f + i runs from corner i to corner i+1 of face f. Each vertex's group is also its
+  // list of corners, and the half-edges of an edge are found in the groups of its two ends,
+  // without a hash table (a 1M-face mesh: 2.9M half-edges).
+  std::vector<int> outStart(nv + 1, 0);
+  for (int f = 0; f < nf; ++f)
+    for (int i = 0; i < 3; ++i) ++outStart[faces_[f][i] + 1];
+  for (int v = 0; v < nv; ++v) outStart[v + 1] += outStart[v];
+  std::vector<int> outgoing(std::size_t(nf) * 3);
+  {
+    std::vector<int> fill(outStart.begin(), outStart.end() - 1);
+    for (int f = 0; f < nf; ++f)
+      for (int i = 0; i < 3; ++i) outgoing[fill[faces_[f][i]]++] = f * 3 + i;
+  }
+  auto target = [&](int h) { return faces_[h / 3][(h % 3 + 1) % 3]; };
+  // The half-edge a -> b, the first in face order, or -1.
+  auto findHalfEdge = [&](int a, int b) {
+    for (int k = outStart[a]; k < outStart[a + 1]; ++k)
+      if (target(outgoing[k]) == b) return outgoing[k];
+    return -1;
+  };
   for (int f = 0; f < nf; ++f)
     for (int i = 0; i < 3; ++i) {
       int a = faces_[f][i], b = faces_[f][(i + 1) % 3];
-      if (!halfEdge.emplace(directedKey(a, b), f * 3 + i).second) {
-        // Either three or more faces share the edge, or two faces run it the same way.
-        int uses = 0;
-        for (int g = 0; g < nf && uses < 3; ++g)
-          for (int j = 0; j < 3; ++j) {
-            int c = faces_[g][j], d = faces_[g][(j + 1) % 3];
-            if ((c == a && d == b) || (c == b && d == a)) ++uses;
-          }
-        int first = halfEdge[directedKey(a, b)] / 3;
-        if (uses > 2)
-          throw MeshError("non-manifold edge: the edge between vertices " + std::to_string(a) +
-                          " and " + std::to_string(b) + " is shared by more than two faces");
-        throw MeshError("inconsistent orientation: faces " + std::to_string(first) + " and " +
-                        std::to_string(f) + " traverse the edge between vertices " + std::to_string(a) +
-                        " and " + std::to_string(b) + " in the same direction (flipped face or "
-                        "non-orientable surface)");
-      }
+      const int first = findHalfEdge(a, b);
+      if (first == f * 3 + i) continue;
+      // Either three or more faces share the edge, or two faces run it the same way.
+      int uses = 0;
+      for (int g = 0; g < nf && uses < 3; ++g)
+        for (int j = 0; j < 3; ++j) {
+          int c = faces_[g][j], d = faces_[g][(j + 1) % 3];
+          if ((c == a && d == b) || (c == b && d == a)) ++uses;
+        }
+      if (uses > 2)
+        throw MeshError("non-manifold edge: the edge between vertices " + std::to_string(a) +
+                        " and " + std::to_string(b) + " is shared by more than two faces");
+      throw MeshError("inconsistent orientation: faces " + std::to_string(first / 3) + " and " +
+                      std::to_string(f) + " traverse the edge between vertices " + std::to_string(a) +
+                      " and " + std::to_string(b) + " in the same direction (flipped face or "
+                      "non-orientable surface)");
     }
   adjFace_.assign(nf, {-1, -1, -1});
   adjEdge_.assign(nf, {-1, -1, -1});
@@ -115,10 +125,10 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     for (int i = 0; i < 3; ++i) {
       if (edgeId_[f][i] >= 0) continue;
       int a = faces_[f][i], b = faces_[f][(i + 1) % 3];
-      auto it = halfEdge.find(directedKey(b, a));
+      const int twin = findHalfEdge(b, a);
       edgeId_[f][i] = numEdges_;
-      if (it != halfEdge.end()) {
-        int g = it->second / 3, j = it->second % 3;
+      if (twin >= 0) {
+        int g = twin / 3, j = twin % 3;
         adjFace_[f][i] = g;
         adjEdge_[f][i] = j;
         adjFace_[g][j] = f;
@@ -129,33 +139,33 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     }
   meanEdgeLength_ = edgeLengthSum / (3.0 * nf);
 
-  // Stars: corners of each vertex, then ordered counter-clockwise by walking across the edge
-  // that enters the vertex (edge (c+2)%3 of the current face).
-  std::vector<std::vector<StarCorner>> corners(nv);
-  for (int f = 0; f < nf; ++f)
-    for (int c = 0; c < 3; ++c) corners[faces_[f][c]].push_back({f, c});
+  // Stars: corners of each vertex (its outgoing half-edges, in face order), then ordered
+  // counter-clockwise by walking across the edge that enters the vertex (edge (c+2)%3 of the
+  // current face).
   stars_.assign(nv, {});
   borderVertex_.assign(nv, 0);
   numUsedVertices_ = 0;
   for (int v = 0; v < nv; ++v) {
-    const auto& cs = corners[v];
-    if (cs.empty()) continue;
+    const int begin = outStart[v], count = outStart[v + 1] - begin;
+    if (count == 0) continue;
     ++numUsedVertices_;
     // A border vertex's fan starts at the corner whose outgoing edge (edge c) is on the border.
     int start = 0, borderStarts = 0;
-    for (int k = 0; k < int(cs.size()); ++k)
-      if (adjFace_[cs[k].face][cs[k].corner] < 0) {
+    for (int k = 0; k < count; ++k) {
+      const int h = outgoing[begin + k];
+      if (adjFace_[h / 3][h % 3] < 0) {
         if (borderStarts == 0) start = k;
         ++borderStarts;
       }
+    }
     if (borderStarts > 1)
       throw MeshError("non-manifold vertex " + std::to_string(v) +
                       ": its faces form several fans touching only at the vertex");
     borderVertex_[v] = borderStarts == 1;
     std::vector<StarCorner> fan;
-    fan.reserve(cs.size());
-    StarCorner cur = cs[start];
-    for (std::size_t step = 0; step <= cs.size(); ++step) {
+    fan.reserve(count);
+    StarCorner cur{outgoing[begin + start] / 3, outgoing[begin + start] % 3};
+    for (int step = 0; step <= count; ++step) {
       fan.push_back(cur);
       int entering = (cur.corner + 2) % 3;
       int g = adjFace_[cur.face][entering];
@@ -165,20 +175,23 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
       if (next.face == fan.front().face) break;  // closed the loop
       cur = next;
     }
-    if (fan.size() != cs.size())
+    if (int(fan.size()) != count)
       throw MeshError("non-manifold vertex " + std::to_string(v) +
                       ": its faces form several fans touching only at the vertex");
     stars_[v] = std::move(fan);
   }
+  std::vector<int>().swap(outgoing);
 
   // Components, border loops, genus.
   UnionFind uf(nf);
   for (int f = 0; f < nf; ++f)
     for (int i = 0; i < 3; ++i)
       if (adjFace_[f][i] >= 0) uf.unite(f, adjFace_[f][i]);
-  std::unordered_map<int, int> componentOf;
-  for (int f = 0; f < nf; ++f) componentOf.emplace(uf.find(f), int(componentOf.size()));
-  numComponents_ = int(componentOf.size());
+  // componentOf[root] numbers the components in the order of their first face.
+  std::vector<int> componentOf(nf, -1);
+  numComponents_ = 0;
+  for (int f = 0; f < nf; ++f)
+    if (componentOf[uf.find(f)] < 0) componentOf[uf.find(f)] = numComponents_++;
   std::vector<long> compV(numComponents_, 0), compE(numComponents_, 0), compF(numComponents_, 0),
       compLoops(numComponents_, 0);
   for (int f = 0; f < nf; ++f) {
