@@ -71,6 +71,7 @@ void addLayoutFigures(FilterOutcome& o, const LayoutStepResult& r) {
   addInt(o, "dangling_ports", long(l.unresolvedPorts.size()));
   addInt(o, "dead_ends_removed", l.deadEndsRemoved);
   addInt(o, "added_corners", r.layout.patches.addedCorners);
+  addInt(o, "ilp_time_limited", l.ilpTimeLimited);
   addSeconds(o, "time_ilp", l.ilpSeconds);
   addSeconds(o, "time_layout", r.seconds);
 }
@@ -81,6 +82,7 @@ void addQuadFigures(FilterOutcome& o, const QuadStepResult& q) {
   addInt(o, "irregular_vertices", q.quad.report.irregularVertices);
   addInt(o, "quad_genus", q.quad.report.genus);
   addInt(o, "split_patches", q.quad.splitPatches);
+  addInt(o, "time_limited_parts", q.quad.timeLimitedParts);
   addSeconds(o, "time_quadrangulation", q.seconds);
 }
 

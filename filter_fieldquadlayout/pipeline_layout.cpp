@@ -64,8 +64,8 @@ std::vector<std::string> describeLayout(const LayoutResult& r) {
     lines.push_back("Warning: " + std::to_string(l.unresolvedPorts.size()) +
                     " ports could not be connected to the layout");
   if (l.ilpTimeLimitHit)
-    lines.push_back("Warning: a 0-1 program reached the time limit; the best selection found "
-                    "was used");
+    lines.push_back("Warning: the 0-1 programs' time limit (a safety stop) cut " + std::to_string(l.ilpTimeLimited) +
+                    " parts short; the best selection found was used, and this layout depends on the machine's speed");
   for (const std::string& m : l.messages) lines.push_back("Note: " + m);
   lines.push_back("Time: 0-1 programs " + formatSeconds(l.ilpSeconds) + ", solving cycle tracing " +
                   formatSeconds(l.cycleTracingSeconds) + ", propagation " +

@@ -78,6 +78,9 @@ std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
   if (r.quad.splitPatches > 0)
     lines.push_back("Zero chains: " + std::to_string(r.quad.splitPatches) +
                     " patches split by Catmull-Clark steps (" + std::to_string(r.quad.splitRounds) + " rounds)");
+  if (r.quad.timeLimitedParts > 0)
+    lines.push_back("Warning: the side-length time limit (a safety stop) cut " + std::to_string(r.quad.timeLimitedParts) +
+                    " parts short: these quads depend on the machine's speed");
   fcql::QuadrangulationOptions used = options();
   used.targetEdgeLength = r.targetEdgeLength;
   for (std::string note : fcql::refinementNotes(r.quad, used)) {

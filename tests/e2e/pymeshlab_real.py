@@ -106,8 +106,10 @@ quad = ms.quadrangulate_field_coherent_quad_layout(alpha=20, k=10, phi=10, ilp_t
 expected = {
     "field": (field, ["faces", "vertices", "genus", "singularities", "ports"], ["time_field"]),
     "trace": (trace, ["graph_g_nodes", "graph_g_arcs", "h_arcs", "tangential_pairs"], ["time_graph", "time_tracing"]),
-    "layout": (layout, ["patches", "t_junctions", "separatrices", "dangling_ports"], ["time_ilp", "time_layout"]),
-    "quad": (quad, ["quads", "quad_vertices", "irregular_vertices", "quad_genus"], ["time_quadrangulation"]),
+    "layout": (layout, ["patches", "t_junctions", "separatrices", "dangling_ports", "ilp_time_limited"],
+               ["time_ilp", "time_layout"]),
+    "quad": (quad, ["quads", "quad_vertices", "irregular_vertices", "quad_genus", "time_limited_parts"],
+             ["time_quadrangulation"]),
 }
 for name, (d, ints, floats) in expected.items():
     for key in ints:
@@ -115,6 +117,8 @@ for name, (d, ints, floats) in expected.items():
     for key in floats:
         check(isinstance(d.get(key), float), "%s: '%s' is %r, not a float" % (name, key, d.get(key)))
 check(quad.get("quads", 0) > 0 and quad.get("quad_genus") == field.get("genus"), "quadrangulate: %r" % quad)
+check(layout.get("ilp_time_limited") == 0 and quad.get("time_limited_parts") == 0,
+      "no safety time limit should be reached on the kitten: %r %r" % (layout, quad))
 q = quad_layer(ms)
 check(q.face_number() == 2 * quad["quads"], "the quad layer has %d triangles for %d quads" % (q.face_number(), quad["quads"]))
 # The layer is flagged polygonal: OBJ and OFF get quads. MeshLab's PLY writer has no polygon
