@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the fuzz targets' seed corpora, made from small generated meshes (no copied files).
 
-usage: make_seeds.py DIR   ->  DIR/mesh/* (first byte: 0 PLY, 1 OBJ, 2 OFF) and DIR/field/*
-(first byte: 0 .ffield, 1 .rosy, for the icosahedron the field target reads against).
+usage: make_seeds.py DIR   ->  DIR/mesh/* (first byte: 0 PLY, 1 OBJ, 2 OFF), DIR/field/*
+(first byte: 0 .ffield, 1 .rosy, for the icosahedron the field target reads against) and
+DIR/render/* (first byte: 0 layout.ply, 1 separatrices.obj, 2 quad.obj, as `fcql run` writes them).
 """
 import math
 import os
@@ -81,12 +82,27 @@ def fields():
     return {"ffield": b"\0" + ffield.encode(), "rosy": b"\1" + rosy.encode()}
 
 
+def render_seeds():
+    p, f = grid(3)
+    layout = ply(p, f, "ascii", extras=True)  # per-face int `patch`
+    layout_bin = ply(p, f, "binary_little_endian", extras=True)
+    seps = "".join("v %g %g %g\n" % v for v in p[:6])
+    seps += "# separatrix 0\nl 1 2 3\n# t-junction 1\nl 4 5\n# to border 2\nl -1 -2\n"
+    quads = obj(p, f).decode()
+    return {"layout_ascii.ply": b"\0" + layout, "layout_binary.ply": b"\0" + layout_bin,
+            "separatrices.obj": b"\1" + seps.encode(), "quad.obj": b"\2" + quads.encode()}
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     root = sys.argv[1]
     os.makedirs(os.path.join(root, "mesh"), exist_ok=True)
     os.makedirs(os.path.join(root, "field"), exist_ok=True)
+    os.makedirs(os.path.join(root, "render"), exist_ok=True)
+    for name, data in render_seeds().items():
+        with open(os.path.join(root, "render", name), "wb") as out:
+            out.write(data)
     seeds = {}
     for name, (p, f) in {"ico": icosahedron(), "grid": grid(3)}.items():
         for fmt in ("ascii", "binary_little_endian", "binary_big_endian"):

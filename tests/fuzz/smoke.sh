@@ -12,7 +12,7 @@ cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Rel
   cmake --build "$build" -j2 >>"$build.log" 2>&1 || { tail -20 "$build.log"; echo "FAIL: the fuzz targets do not build"; exit 1; }
 python3 "$here/make_seeds.py" "$build/seeds" || exit 1
 failures=0
-for kind in mesh field; do
+for kind in mesh field render; do
   target="$build/${kind}_reader_fuzz"
   if [ -d "$here/regressions/$kind" ] && [ -n "$(ls -A "$here/regressions/$kind")" ]; then
     "$target" "$here/regressions/$kind"/* >"$build/$kind.replay.log" 2>&1 ||
