@@ -94,6 +94,38 @@ expect 1 tiny_mesh "coordinates are out of the supported range: the mesh spans 2
 printf 'v 1e300 1e300 1e300\nv 1e300 -1e300 -1e300\nv -1e300 1e300 -1e300\nv -1e300 -1e300 1e300\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n' >"$tmp/vast.obj"
 expect 1 vast_mesh "out of the supported range.*reaches out to 1e+300" field "$tmp/vast.obj"
 
+# ---- the other classes of bad meshes ------------------------------------------------------------
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n' >"$tmp/index0.obj"
+expect 1 zero_index "bad vertex reference '0'" field "$tmp/index0.obj"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -2\n' >"$tmp/negative.off"
+expect 1 negative_index "bad vertex index '-2'" field "$tmp/negative.off"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n' >"$tmp/collinear.obj"
+expect 1 degenerate_face "face 0 is degenerate" field "$tmp/collinear.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 2 3 1\n' >"$tmp/duplicated.obj"
+expect 1 duplicated_face "faces 0 and 1 are the same triangle" field "$tmp/duplicated.obj"
+printf 'v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n' >"$tmp/inf.obj"
+expect 1 infinite_coordinate "coordinate 'inf' is not finite" field "$tmp/inf.obj"
+python3 - "$tmp/mobius.obj" <<'PY'
+import math, sys
+n, w, v, f = 12, 0.3, [], []
+for i in range(n):
+    t = 2 * math.pi * i / n
+    for s in (-w, w):
+        v.append(((1 + s * math.cos(t / 2)) * math.cos(t), (1 + s * math.cos(t / 2)) * math.sin(t), s * math.sin(t / 2)))
+for i in range(n):
+    a, b = 2 * i, 2 * i + 1
+    c, d = (2 * i + 2, 2 * i + 3) if i < n - 1 else (1, 0)  # the half twist
+    f += [(a, b, d), (a, d, c)]
+open(sys.argv[1], "w").write("".join("v %f %f %f\n" % p for p in v) + "".join("f %d %d %d\n" % (a + 1, b + 1, c + 1) for a, b, c in f))
+PY
+expect 1 moebius "non-orientable surface" field "$tmp/mobius.obj"
+# Accepted: a single triangle (one disk, quads of its genus and border), isolated vertices (kept
+# apart, unused), an output folder whose name holds spaces.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\n' >"$tmp/triangle.obj"
+"$fcql" run "$tmp/triangle.obj" --out "$tmp/with spaces/triangle" --quiet 2>"$tmp/stderr" || fail "a single triangle with an isolated vertex: $(cat "$tmp/stderr")"
+[ -s "$tmp/with spaces/triangle/quad.obj" ] && ! grep -q '^f [0-9]* [0-9]* [0-9]*$' "$tmp/with spaces/triangle/quad.obj" ||
+  fail "a single triangle: no pure-quad quad.obj in a folder whose name holds spaces"
+
 # ---- options that used to fail only after the whole run (or ran out of memory) ----------------
 touch "$tmp/a_file"
 early=1

@@ -112,6 +112,14 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
       if (uses > 2)
         throw MeshError("non-manifold edge: the edge between vertices " + std::to_string(a) +
                         " and " + std::to_string(b) + " is shared by more than two faces");
+      {
+        std::array<int, 3> x = faces_[first / 3], y = faces_[f];
+        std::sort(x.begin(), x.end());
+        std::sort(y.begin(), y.end());
+        if (x == y)
+          throw MeshError("faces " + std::to_string(first / 3) + " and " + std::to_string(f) +
+                          " are the same triangle (a duplicated face)");
+      }
       throw MeshError("inconsistent orientation: faces " + std::to_string(first / 3) + " and " +
                       std::to_string(f) + " traverse the edge between vertices " + std::to_string(a) +
                       " and " + std::to_string(b) + " in the same direction (flipped face or "
