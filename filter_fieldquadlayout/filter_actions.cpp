@@ -81,6 +81,7 @@ void addQuadFigures(FilterOutcome& o, const QuadStepResult& q) {
   addInt(o, "irregular_vertices", q.quad.report.irregularVertices);
   addInt(o, "quad_genus", q.quad.report.genus);
   addInt(o, "split_patches", q.quad.splitPatches);
+  addInt(o, "inverted_quads", q.invertedQuads);
   addSeconds(o, "time_quadrangulation", q.seconds);
 }
 

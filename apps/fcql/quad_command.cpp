@@ -91,6 +91,10 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
                 quality.misalignedPercent, quality.meanMisalignmentDeg, quality.misalignedFacesPercent,
                 quality.minScaledJacobian, quality.meanScaledJacobian, 100 * quality.hausdorffRelative);
   progress(quiet, line);
+  if (quality.invertedQuads > 0)
+    progress(quiet, "warning: " + std::to_string(quality.invertedQuads) +
+                        " quads are folded or turned against the surface (scaled Jacobian <= 0) after smoothing and "
+                        "untangling (quad.inverted_quads)");
   return qs;
 }
 

@@ -131,6 +131,50 @@ SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex
   return d;
 }
 
+QuadJacobian::QuadJacobian(const QuadMesh& mesh, bool surfaceNormals)
+    : mesh_(mesh), quadsOf_(mesh.positions.size()), surfaceNormals_(surfaceNormals) {
+  for (int q = 0; q < mesh.numQuads(); ++q)
+    for (int v : mesh.quads[q]) quadsOf_[v].push_back(q);
+}
+
+Vec3 QuadJacobian::vertexNormal(int v) const {
+  const auto& P = mesh_.positions;
+  Vec3 sum = Vec3::Zero();
+  for (int q : quadsOf_[v]) {
+    const auto& f = mesh_.quads[q];
+    const Vec3 n = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
+    const double l = n.norm();
+    if (l > 0) sum += n / l;
+  }
+  const double l = sum.norm();
+  return l > 0 ? Vec3(sum / l) : Vec3(Vec3::Zero());
+}
+
+double QuadJacobian::operator()(int q) const {
+  const double own = scaledJacobian(mesh_, q);
+  if (!surfaceNormals_) return own;
+  const auto& f = mesh_.quads[q];
+  const auto& P = mesh_.positions;
+  double turned = 1;  // the worst corner against the surface normal
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 e1 = P[f[(i + 1) % 4]] - P[f[i]];
+    const Vec3 e2 = P[f[(i + 3) % 4]] - P[f[i]];
+    const double l = e1.norm() * e2.norm();
+    if (!(l > 0)) return -1;
+    const Vec3 n = vertexNormal(f[i]);
+    if (!n.isZero()) turned = std::min(turned, e1.cross(e2).dot(n) / l);
+  }
+  return turned > 0 ? own : std::min(own, turned);
+}
+
+void QuadJacobian::dependents(int v, std::vector<int>& out) const {
+  out.clear();
+  for (int q : quadsOf_[v])
+    for (int w : mesh_.quads[q]) out.insert(out.end(), quadsOf_[w].begin(), quadsOf_[w].end());
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 double scaledJacobian(const QuadMesh& mesh, int q) {
   const auto& f = mesh.quads[q];
   const auto& P = mesh.positions;
@@ -154,6 +198,7 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
   const int nq = quads.numQuads();
   if (nq == 0) return r;
   const auto& P = quads.positions;
+  const QuadJacobian jacobian(quads);
   int misaligned = 0;
   double sumAngle = 0, sumJ = 0, minJ = std::numeric_limits<double>::infinity();
   for (int q = 0; q < nq; ++q) {
@@ -165,7 +210,7 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
                                   angleToCross(surface, field, cp.triangle, d[1]));
     sumAngle += angle;
     if (angle > thresholdRad) ++misaligned;
-    const double j = scaledJacobian(quads, q);
+    const double j = jacobian(q);
     sumJ += j;
     minJ = std::min(minJ, j);
     if (j <= 0) ++r.invertedQuads;

@@ -14,7 +14,12 @@
 //   σ/2 off each), against the face's own cross. Shear counts half as much as above.
 // - Scaled Jacobian of a quad: the minimum over its corners of (e1 × e2)·n / (|e1| |e2|), with
 //   e1, e2 the edges leaving the corner and n the unit normal of the quad (cross product of its
-//   diagonals): 1 for a rectangle, ≤ 0 for a folded or inverted corner.
+//   diagonals): 1 for a rectangle, ≤ 0 for a folded or inverted corner. Each corner is also
+//   measured against the surface normal there (the mean of the unit normals of the quads around
+//   the corner's vertex): a quad turned over against its neighbours (a page folded back, whose
+//   corners all agree with its own normal) is negative there, and when a corner is, the lowest
+//   of those values is taken. So a quad is folded (≤ 0) when any of its four corners is, by
+//   either normal; a quad that is not keeps the figure against its own normal.
 // - Hausdorff distance between the quad mesh (each quad as two triangles) and the input
 //   surface, both ways, sampled at vertices, edge midpoints and quad centres on the quad side
 //   and at the vertices and face centroids on the input side.
@@ -43,8 +48,29 @@ struct SurfaceDeviation {
 SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
                                   const std::vector<Vec3>& surfacePoints, double limit);
 
-/// Scaled Jacobian of quad q of `mesh` (see above).
+/// Scaled Jacobian of quad q of `mesh` against its own normal only (see above).
 double scaledJacobian(const QuadMesh& mesh, int q);
+
+/// The scaled Jacobian of every quad against its own normal and the surface normal at each
+/// corner (see above). Moving a vertex changes the figure of the quads around it and of the
+/// quads around its neighbours (their corner normals): `dependents` lists them.
+class QuadJacobian {
+public:
+  /// surfaceNormals = false: against the quads' own normals only (as scaledJacobian).
+  explicit QuadJacobian(const QuadMesh& mesh, bool surfaceNormals = true);
+  /// Quad q's scaled Jacobian with the mesh's current positions.
+  double operator()(int q) const;
+  /// Surface normal at vertex v (unit, zero if its quads have no area).
+  Vec3 vertexNormal(int v) const;
+  /// Quads whose figure depends on the position of vertex v, sorted.
+  void dependents(int v, std::vector<int>& out) const;
+  const std::vector<int>& quadsAround(int v) const { return quadsOf_[v]; }
+
+private:
+  const QuadMesh& mesh_;
+  std::vector<std::vector<int>> quadsOf_;
+  bool surfaceNormals_ = true;
+};
 
 struct QuadQuality {
   double misalignedPercent = 0;     ///< % of quads misaligned by more than the threshold
