@@ -74,7 +74,8 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
 
   const auto metricsStart = std::chrono::steady_clock::now();
   const ClosestPointIndex surfaceIndex(fs.mesh);
-  const QuadQuality quality = measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex);
+  const QuadQuality quality =
+      measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex, options.maxDeviation * diagonal);
   stats.set("quad.misaligned_pct", quality.misalignedPercent);
   stats.set("quad.mean_misalignment_deg", quality.meanMisalignmentDeg);
   stats.set("quad.misaligned_faces_pct", quality.misalignedFacesPercent);
@@ -83,13 +84,15 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.inverted_quads", quality.invertedQuads);
   stats.set("quad.hausdorff", quality.hausdorff);
   stats.set("quad.hausdorff_rel", quality.hausdorffRelative);
+  stats.set("quad.hausdorff_bound_rel", quality.hausdorffBoundRelative);
   stats.set("time_s.metrics", std::chrono::duration<double>(std::chrono::steady_clock::now() - metricsStart).count());
   char line[300];
   std::snprintf(line, sizeof line,
                 "quality: %.2f%% quads misaligned > pi/16 (mean %.2f deg; %.2f%% of the faces as the paper counts "
-                "them), scaled Jacobian min %.3f mean %.3f, Hausdorff %.3g%% of the diagonal",
+                "them), scaled Jacobian min %.3f mean %.3f, Hausdorff %.3g%% of the diagonal (at most %.3g%%)",
                 quality.misalignedPercent, quality.meanMisalignmentDeg, quality.misalignedFacesPercent,
-                quality.minScaledJacobian, quality.meanScaledJacobian, 100 * quality.hausdorffRelative);
+                quality.minScaledJacobian, quality.meanScaledJacobian, 100 * quality.hausdorffRelative,
+                100 * quality.hausdorffBoundRelative);
   progress(quiet, line);
   if (quality.invertedQuads > 0)
     progress(quiet, "warning: " + std::to_string(quality.invertedQuads) +

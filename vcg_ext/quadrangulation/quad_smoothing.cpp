@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -54,24 +55,30 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
   const QuadJacobian jacobian(quads, surfaceNormals);
   std::vector<int> around;
   std::vector<double> before;
-  // How bad the quads around are: the sum of their shortfalls below the threshold.
+  std::vector<double> now;
+  // The quads around at the vertex's current position: their shortfall below the threshold,
+  // or infinity when one falls below min(its figure before, threshold).
   auto shortfall = [&] {
+    jacobian.values(around, now);
     double sum = 0;
-    for (int q : around) sum += std::max(0.0, kMinScaledJacobian - jacobian(q));
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      if (now[i] < std::min(before[i], kMinScaledJacobian)) return std::numeric_limits<double>::infinity();
+      sum += std::max(0.0, kMinScaledJacobian - now[i]);
+    }
     return sum;
-  };
-  // A position is acceptable when no quad around falls below min(its figure before, threshold).
-  auto acceptable = [&] {
-    for (std::size_t i = 0; i < around.size(); ++i)
-      if (jacobian(around[i]) < std::min(before[i], kMinScaledJacobian)) return false;
-    return true;
   };
   std::vector<Vec3> candidates;
   std::vector<int> bad, corners;
+  double lastTotal = 0;
   for (int sweep = 0; sweep < 20; ++sweep) {
     bad.clear();
+    jacobian.all(now);
+    double total = 0;
     for (int q = 0; q < quads.numQuads(); ++q)
-      if (jacobian(q) <= kMinScaledJacobian) bad.push_back(q);
+      if (now[q] <= kMinScaledJacobian) bad.push_back(q), total += kMinScaledJacobian - now[q];
+    // Stop once a sweep gains less than 1% of the shortfall.
+    if (sweep > 0 && total > lastTotal * 0.99) break;
+    lastTotal = total;
     if (bad.empty()) break;
     // The corners of the bad quads first, then their neighbours (a fold can need room).
     corners.clear();
@@ -88,9 +95,9 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
       if (fixed[v] || neighbours[v].empty()) continue;
       jacobian.dependents(v, around);
       const Vec3 original = quads.positions[v];
-      before.clear();
-      for (int q : around) before.push_back(jacobian(q));
-      double best = shortfall();
+      jacobian.values(around, before);
+      double best = 0;
+      for (double j : before) best += std::max(0.0, kMinScaledJacobian - j);
       if (!(best > 0)) continue;
       candidates.clear();
       Vec3 centre = Vec3::Zero();
@@ -110,7 +117,6 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
       Vec3 bestPosition = original;
       for (const Vec3& c : candidates) {
         quads.positions[v] = surface.closest(c).point;
-        if (!acceptable()) continue;
         const double s = shortfall();
         if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
       }
@@ -128,7 +134,6 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
         for (int k = 0; k < 8; ++k) {
           const double a = k * kPi / 4;
           quads.positions[v] = surface.closest(from + (t1 * std::cos(a) + t2 * std::sin(a)) * r).point;
-          if (!acceptable()) continue;
           const double s = shortfall();
           if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
         }
@@ -147,8 +152,9 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
   for (int rings : {2, 4, 8}) {
     std::vector<char> inRegion(quads.positions.size(), 0);
     std::vector<int> frontier;
+    jacobian.all(now);
     for (int q = 0; q < quads.numQuads(); ++q)
-      if (jacobian(q) <= 0)
+      if (now[q] <= 0)
         for (int v : quads.quads[q])
           if (!inRegion[v]) inRegion[v] = 1, frontier.push_back(v);
     if (frontier.empty()) break;
@@ -175,9 +181,9 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
       }
       std::sort(affected.begin(), affected.end());
       affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
-      before.clear();
+      jacobian.values(affected, before);
       int foldedBefore = 0;
-      for (int q : affected) before.push_back(jacobian(q)), foldedBefore += before.back() <= 0;
+      for (double j : before) foldedBefore += j <= 0;
       if (foldedBefore == 0) continue;
       std::vector<Vec3> saved;
       for (int v : members) saved.push_back(quads.positions[v]);
@@ -189,8 +195,9 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
         }
       int foldedAfter = 0;
       bool newFold = false;
+      jacobian.values(affected, now);
       for (std::size_t i = 0; i < affected.size(); ++i) {
-        const double j = jacobian(affected[i]);
+        const double j = now[i];
         foldedAfter += j <= 0;
         newFold = newFold || (j <= 0 && before[i] > 0);
       }
@@ -269,10 +276,11 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   // left. So no step folds or flattens a quad; quads already bad are left to the untangling.
   const QuadJacobian jacobian(quads);
   std::vector<Vec3> next(quads.positions);
-  std::vector<double> before(quads.numQuads());
+  std::vector<double> before(quads.numQuads()), after;
+  std::vector<int> dependent;
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
-    for (int q = 0; q < quads.numQuads(); ++q) before[q] = jacobian(q);
+    jacobian.all(before);
     for (int v = 0; v < nv; ++v) {
       next[v] = previous[v];
       if (fixed[v] || neighbours[v].empty()) continue;
@@ -298,31 +306,38 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
       }
     }
     quads.positions = next;
-    for (bool again = true; again;) {
-      again = false;
-      for (int q = 0; q < quads.numQuads(); ++q) {
-        if (!(before[q] > kMinScaledJacobian) || jacobian(q) > kMinScaledJacobian) continue;
+    // The quads to check: all at first, then those depending on a vertex just put back.
+    std::vector<int> check, reverted;
+    jacobian.all(after);
+    for (int q = 0; q < quads.numQuads(); ++q)
+      if (before[q] > kMinScaledJacobian && after[q] <= kMinScaledJacobian) check.push_back(q);
+    while (!check.empty()) {
+      reverted.clear();
+      for (int q : check) {
         // Its own corners first; if they had not moved, the neighbours that turned its normals.
-        bool reverted = false;
+        bool own = false;
         for (int v : quads.quads[q])
-          if (quads.positions[v] != previous[v]) {
-            quads.positions[v] = previous[v];
-            ++report.revertedMoves;
-            reverted = true;
-          }
+          if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v), own = true;
+        if (own) continue;
         for (int c : quads.quads[q])
           for (int r : jacobian.quadsAround(c))
             for (int v : quads.quads[r])
-              if (!reverted && quads.positions[v] != previous[v]) {
-                quads.positions[v] = previous[v];
-                ++report.revertedMoves;
-              }
-        again = true;
+              if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v);
       }
+      report.revertedMoves += int(reverted.size());
+      std::vector<int> candidatesToCheck;
+      for (int v : reverted) {
+        jacobian.dependents(v, dependent);
+        candidatesToCheck.insert(candidatesToCheck.end(), dependent.begin(), dependent.end());
+      }
+      std::sort(candidatesToCheck.begin(), candidatesToCheck.end());
+      candidatesToCheck.erase(std::unique(candidatesToCheck.begin(), candidatesToCheck.end()), candidatesToCheck.end());
+      jacobian.values(candidatesToCheck, after);
+      check.clear();
+      for (std::size_t i = 0; i < candidatesToCheck.size(); ++i)
+        if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
     }
   }
-  // Folds first (against the quads' own normals: where quads are folded, the surface normals
-  // around them are not to be trusted), then quads turned against the surface as well.
   untangle(quads, index, fixed, neighbours, false, report);
   untangle(quads, index, fixed, neighbours, true, report);
   return report;
@@ -342,7 +357,7 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   for (int i = 0; i < int(far.size()); ++i) cells[cellOf(far[i])].push_back(i);
   const QuadJacobian jacobian(quads);
   std::vector<int> around;
-  std::vector<double> before;
+  std::vector<double> before, after;
   // Vertex by vertex in index order: a return that folds or flattens a quad that depends on the
   // vertex (given where the others are by then) is not made.
   int count = 0;
@@ -361,12 +376,12 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
     if (!(nearest < radius)) continue;
     const double share = std::min(1.0, 2.0 * (1.0 - nearest / radius));
     jacobian.dependents(v, around);
-    before.clear();
-    for (int q : around) before.push_back(jacobian(q));
+    jacobian.values(around, before);
     quads.positions[v] = smoothed + (sampled[v] - smoothed) * share;
     bool folds = false;
+    jacobian.values(around, after);
     for (std::size_t i = 0; i < around.size() && !folds; ++i)
-      folds = before[i] > kMinScaledJacobian && jacobian(around[i]) <= kMinScaledJacobian;
+      folds = before[i] > kMinScaledJacobian && after[i] <= kMinScaledJacobian;
     if (folds) quads.positions[v] = smoothed;
     else ++count;
   }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace fcql {
@@ -75,58 +76,58 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   const SurfaceTopology topology = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
   QuadrangulationResult r = quadrangulateOnce(layout, options, topology);
   if (options.maxDeviation <= 0) return r;
-  // The distance to the surface, measured on the layout's triangles (the input, cut): where it
-  // exceeds the bound, sample again more finely. A chord of a curve deviates from it by about
-  // h²/(8R) for edges of length h, hence the square root in the step.
-  // Samples: the vertices the triangles use (a mesh file may hold unused ones) and centroids.
+  // The distance to the surface, measured on the layout's triangles (the input, cut), both
+  // ways and densely (measureDeviation: an upper bound on the true distance decides): where it
+  // may exceed the bound, sample again more finely. A chord of a curve deviates from it by
+  // about h²/(8R) for edges of length h, hence the square root in the step.
   std::vector<char> used(layout.positions.size(), 0);
   for (const auto& t : layout.triangles)
     for (int v : t) used[v] = 1;
-  std::vector<Vec3> samples;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  bool any = false;
   for (std::size_t v = 0; v < used.size(); ++v)
-    if (used[v]) samples.push_back(layout.positions[v]);
-  if (samples.empty() || r.mesh.numQuads() == 0) return r;  // nothing to measure
-  Vec3 lo = samples.front(), hi = lo;
-  for (const Vec3& p : samples) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    if (used[v]) lo = lo.cwiseMin(layout.positions[v]), hi = hi.cwiseMax(layout.positions[v]), any = true;
+  if (!any || r.mesh.numQuads() == 0) return r;  // nothing to measure
   const double limit = options.maxDeviation * (hi - lo).norm();
+  const double resolution = 0.02 * limit;
   const ClosestPointIndex surface(layout.positions, layout.triangles);
-  for (const auto& t : layout.triangles)
-    samples.push_back((layout.positions[t[0]] + layout.positions[t[1]] + layout.positions[t[2]]) / 3);
   // Smoothing may have slid vertices off a sharp tip, which the sampled mesh covered: where
   // the quads stray too far, undo it around those points (a few rounds, while it helps)
   // before sampling finer.
   // Each measurement also gives the far points the next round starts from.
   auto measure = [&](QuadrangulationResult& q) {
-    SurfaceDeviation d = measureDeviation(q.mesh, surface, samples, limit);
+    SurfaceDeviation d = measureDeviation(q.mesh, surface, limit, resolution);
     q.deviation = d.distance;
-    for (int round = 0; round < 3 && q.deviation > limit; ++round) {
+    q.deviationBound = d.bound;
+    for (int round = 0; round < 3 && q.deviationBound > limit; ++round) {
       const std::vector<Vec3> smoothed = q.mesh.positions;
       const int restored = restoreSampledPositions(q.mesh, q.sampledPositions, d.farPoints, 2 * q.targetEdgeLength);
       if (restored == 0) break;
-      SurfaceDeviation after = measureDeviation(q.mesh, surface, samples, limit);
-      if (!(after.distance < q.deviation)) {
+      SurfaceDeviation after = measureDeviation(q.mesh, surface, limit, resolution);
+      if (!(after.bound < q.deviationBound)) {
         q.mesh.positions = smoothed;
         break;
       }
       q.restoredVertices += restored;
       q.deviation = after.distance;
+      q.deviationBound = after.bound;
       d = std::move(after);
     }
   };
   measure(r);
   QuadrangulationOptions finer = options;
-  while (r.deviation > limit && r.refinements < options.maxRefinements) {
-    finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviation), 0.5, 0.9);
+  while (r.deviationBound > limit && r.refinements < options.maxRefinements) {
+    finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviationBound), 0.5, 0.9);
     const int refinements = r.refinements + 1;
     try {
       QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);
       next.refinements = refinements;
       measure(next);
-      if (!(next.deviation < r.deviation)) {
+      if (!(next.deviationBound < r.deviationBound)) {
         // Smaller quads that get no closer (stretched or distorted patches): keep the closer mesh.
         char line[160];
         std::snprintf(line, sizeof line, "target edge %g: the mesh got no closer (%.3g%% of the diagonal)",
-                      finer.targetEdgeLength, 100 * options.maxDeviation * next.deviation / limit);
+                      finer.targetEdgeLength, 100 * options.maxDeviation * next.deviationBound / limit);
         r.refinementProblem = line;
         break;
       }
@@ -137,6 +138,19 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       r.refinementProblem = "target edge " + std::to_string(finer.targetEdgeLength) + ": " + e.what();
       break;
     }
+  }
+  r.deviationLimit = limit;
+  if (r.deviationBound > limit) {
+    // Exit 0 means the bound holds: a mesh that may be farther is not returned.
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "the quad mesh may be up to %.3g%% of the diagonal from the surface (at least %.3g%% measured), "
+                  "above the bound of %g%% (--max-deviation), after %d refinement(s) down to a target edge of %g%s%s; "
+                  "give a larger bound, smaller quads (--scale) or 0 to disable the check",
+                  100 * options.maxDeviation * r.deviationBound / limit, 100 * options.maxDeviation * r.deviation / limit,
+                  100 * options.maxDeviation, r.refinements, r.targetEdgeLength,
+                  r.refinementProblem.empty() ? "" : "; the next finer pass failed: ", r.refinementProblem.c_str());
+    throw std::runtime_error(line);
   }
   r.deviationLimit = limit;
   return r;
@@ -153,10 +167,10 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
   const double diagonal = r.deviationLimit / options.maxDeviation;
   if (r.refinements > 0) {
     std::snprintf(line, sizeof line,
-                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation %.3g%%%s",
+                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation at most %.3g%%%s",
                   r.refinements, 100 * options.maxDeviation, options.targetEdgeLength, r.targetEdgeLength,
-                  diagonal > 0 ? 100 * r.deviation / diagonal : 0.0,
-                  r.deviation <= r.deviationLimit ? ""
+                  diagonal > 0 ? 100 * r.deviationBound / diagonal : 0.0,
+                  r.deviationBound <= r.deviationLimit ? ""
                   : r.refinementProblem.empty()   ? " (still above: refinements exhausted)"
                                                   : " (still above: the next finer pass failed, see below)");
     notes.push_back(line);
