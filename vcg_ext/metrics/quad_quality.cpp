@@ -310,7 +310,7 @@ QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface
 
   const double diag = surface.boundingBoxDiagonal();
   const SurfaceDeviation deviation =
-      measureDeviation(quads, surfaceIndex, deviationLimit, deviationLimit > 0 ? 0.02 * deviationLimit : 2e-4 * diag);
+      measureDeviation(quads, surfaceIndex, deviationLimit, std::max(0.02 * deviationLimit, 2e-4 * diag));
   r.hausdorff = deviation.distance;
   r.hausdorffBound = deviation.bound;
   r.hausdorffRelative = diag > 0 ? r.hausdorff / diag : 0;

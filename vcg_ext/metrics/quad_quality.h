@@ -105,7 +105,8 @@ struct QuadQuality {
 
 /// `surfaceIndex` indexes the faces of `surface` (ClosestPointIndex(surface)). The Hausdorff
 /// distance is measured as measureDeviation does with `deviationLimit` (absolute; 0: the
-/// largest distance to within 2e-4 of the diagonal; else to within 2% of the limit).
+/// largest distance to within 2e-4 of the diagonal; else to within 2% of the limit, but no
+/// finer than that).
 QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
                                const ClosestPointIndex& surfaceIndex, double deviationLimit = 0,
                                double thresholdRad = 3.14159265358979323846 / 16);

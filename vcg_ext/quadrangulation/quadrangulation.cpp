@@ -89,7 +89,9 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     if (used[v]) lo = lo.cwiseMin(layout.positions[v]), hi = hi.cwiseMax(layout.positions[v]), any = true;
   if (!any || r.mesh.numQuads() == 0) return r;  // nothing to measure
   const double limit = options.maxDeviation * (hi - lo).norm();
-  const double resolution = 0.02 * limit;
+  // Triangles are cut down to 2% of the limit, but no finer than 2e-4 of the diagonal (a
+  // tiny limit would cut without end; what stays undecided then counts as too far).
+  const double resolution = std::max(0.02 * limit, 2e-4 * (hi - lo).norm());
   const ClosestPointIndex surface(layout.positions, layout.triangles);
   // Smoothing may have slid vertices off a sharp tip, which the sampled mesh covered: where
   // the quads stray too far, undo it around those points (a few rounds, while it helps)
