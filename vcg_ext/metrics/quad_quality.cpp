@@ -195,6 +195,11 @@ SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex
   return d;
 }
 
+QuadJacobian::QuadJacobian(const QuadMesh& mesh, std::vector<Vec3> referenceNormals)
+    : QuadJacobian(mesh, true) {
+  referenceNormals_ = std::move(referenceNormals);
+}
+
 QuadJacobian::QuadJacobian(const QuadMesh& mesh, bool surfaceNormals)
     : mesh_(mesh), quadsOf_(mesh.positions.size()), surfaceNormals_(surfaceNormals) {
   for (int q = 0; q < mesh.numQuads(); ++q)
@@ -226,7 +231,7 @@ double QuadJacobian::evaluate(int q, Normal&& normalAt) const {
     const Vec3 e2 = P[f[(i + 3) % 4]] - P[f[i]];
     const double l = e1.norm() * e2.norm();
     if (!(l > 0)) return -1;
-    const Vec3& n = normalAt(f[i]);
+    const Vec3& n = referenceNormals_.empty() ? normalAt(f[i]) : referenceNormals_[q];
     if (!n.isZero()) turned = std::min(turned, e1.cross(e2).dot(n) / l);
   }
   return turned > 0 ? own : std::min(own, turned);
@@ -256,6 +261,10 @@ void QuadJacobian::all(std::vector<double>& out) const {
 
 void QuadJacobian::dependents(int v, std::vector<int>& out) const {
   out.clear();
+  if (!surfaceNormals_ || !referenceNormals_.empty()) {  // a quad's figure depends on its corners only
+    out = quadsOf_[v];
+    return;
+  }
   for (int q : quadsOf_[v])
     for (int w : mesh_.quads[q]) out.insert(out.end(), quadsOf_[w].begin(), quadsOf_[w].end());
   std::sort(out.begin(), out.end());

@@ -66,6 +66,10 @@ class QuadJacobian {
 public:
   /// surfaceNormals = false: against the quads' own normals only (as scaledJacobian).
   explicit QuadJacobian(const QuadMesh& mesh, bool surfaceNormals = true);
+  /// Against the quads' own normals and, at every corner, a fixed normal per quad
+  /// (`referenceNormals[q]`, e.g. the input surface's there) instead of the corner's: a quad's
+  /// figure then depends on its own corners only.
+  QuadJacobian(const QuadMesh& mesh, std::vector<Vec3> referenceNormals);
   /// Quad q's scaled Jacobian with the mesh's current positions.
   double operator()(int q) const;
   /// The figures of `quads` (out[i] for quads[i]), each corner normal computed once.
@@ -85,6 +89,7 @@ private:
 
   std::vector<std::vector<int>> quadsOf_;
   bool surfaceNormals_ = true;
+  std::vector<Vec3> referenceNormals_;  ///< per quad, if given
   mutable std::vector<Vec3> normalCache_;  ///< per vertex, valid where stamp_ == epoch_
   mutable std::vector<unsigned> stamp_;
   mutable unsigned epoch_ = 0;

@@ -18,6 +18,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSnapShare = 0.35;
 constexpr double kMinScaledJacobian = 0.1;
+constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower
 
 /// Per triangle and local edge (i → i+1): 1 if the edge is sharp (dihedral above the threshold).
 std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
@@ -51,19 +52,23 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
 /// usual case: the Laplacian pulls its inner vertex towards the corner, the completion pushes it
 /// out. So no move folds a quad that was not folded, or worsens one that was.
 void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<char>& fixed,
-              const std::vector<std::vector<int>>& neighbours, bool surfaceNormals, SmoothingReport& report) {
-  const QuadJacobian jacobian(quads, surfaceNormals);
+              const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian, SmoothingReport& report) {
   std::vector<int> around;
   std::vector<double> before;
   std::vector<double> now;
-  // The quads around at the vertex's current position: their shortfall below the threshold,
-  // or infinity when one falls below min(its figure before, threshold).
+  // How bad a quad is: its shortfall below the threshold, ten times more below 0 (folded).
+  auto penalty = [](double j) { return std::max(0.0, kMinScaledJacobian - j) + 10 * std::max(0.0, -j); };
+  // The quads around at the vertex's current position: their summed penalty, or infinity when
+  // one that was not folded falls to kUntangleFloor or below its figure before, whichever is
+  // lower, or one that was folded gets worse. Quads may get a little worse than the threshold
+  // while their neighbours unfold, but none folds.
   auto shortfall = [&] {
     jacobian.values(around, now);
     double sum = 0;
     for (std::size_t i = 0; i < around.size(); ++i) {
-      if (now[i] < std::min(before[i], kMinScaledJacobian)) return std::numeric_limits<double>::infinity();
-      sum += std::max(0.0, kMinScaledJacobian - now[i]);
+      const double floor = before[i] > 0 ? std::min(before[i], kUntangleFloor) : before[i];
+      if (now[i] < floor) return std::numeric_limits<double>::infinity();
+      sum += penalty(now[i]);
     }
     return sum;
   };
@@ -97,7 +102,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
       const Vec3 original = quads.positions[v];
       jacobian.values(around, before);
       double best = 0;
-      for (double j : before) best += std::max(0.0, kMinScaledJacobian - j);
+      for (double j : before) best += penalty(j);
       if (!(best > 0)) continue;
       candidates.clear();
       Vec3 centre = Vec3::Zero();
@@ -338,8 +343,20 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
         if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
     }
   }
-  untangle(quads, index, fixed, neighbours, false, report);
-  untangle(quads, index, fixed, neighbours, true, report);
+  {
+    // Against the input surface's normal at each quad (the mean of the normals of the surface
+    // triangles its corners lie on), which folded quads do not disturb.
+    std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
+    std::vector<Vec3> at(nv, Vec3::Zero());
+    for (int v = 0; v < nv; ++v)
+      if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
+    for (int q = 0; q < quads.numQuads(); ++q) {
+      for (int v : quads.quads[q]) reference[q] += at[v];
+      if (reference[q].norm() > 0) reference[q].normalize();
+    }
+    untangle(quads, index, fixed, neighbours, QuadJacobian(quads, std::move(reference)), report);
+  }
+  untangle(quads, index, fixed, neighbours, jacobian, report);
   return report;
 }
 

@@ -10,11 +10,13 @@
 // from above kMinScaledJacobian (0.1) to it or below, at any of its four corners, against its
 // own normal or the surface normal there (QuadJacobian, metrics/quad_quality.h), has the moves
 // it depends on undone. Last, the quads still folded or nearly flat are untangled, first
-// against their own normals, then against the surface normals: each vertex around them tries
+// against the input surface's normal at each quad (which folded quads do not disturb: the
+// mean normal of the surface triangles its corners lie on), then against the surface normal
+// at each corner as it is measured: each vertex around them tries
 // the parallelogram completions of its quads, its neighbours' average and its quads' centre (on
 // the surface), then a pattern search in the tangent plane, and keeps the position that most
-// lowers the quads' shortfall below the threshold without lowering any quad below its figure
-// or the threshold; folds left in clusters are smoothed as regions of 2, 4 and 8 rings, kept
+// lowers the quads' shortfall below the threshold (folds weighing ten times more) without
+// folding any quad, worsening a folded one or taking a good one below 0.02; folds left in clusters are smoothed as regions of 2, 4 and 8 rings, kept
 // only when fewer quads are folded and none newly. What cannot be unfolded stays (counted by
 // the caller: quad.inverted_quads).
 #pragma once
