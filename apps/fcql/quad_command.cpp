@@ -45,6 +45,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
                         std::to_string(r.splitRounds) + " rounds)");
   stats.set("quad.zero_chain_splits", r.splitPatches);
   stats.set("quad.polygon_patches", r.polygonPatches);
+  stats.set("quad.dissolved_vertices", r.dissolvedVertices);
   stats.set("quad.outside_points", qs.mesh.outsidePoints);
   if (qs.mesh.outsidePoints > 0)
     progress(quiet, "warning: " + std::to_string(qs.mesh.outsidePoints) +

@@ -12,6 +12,57 @@
 namespace fcql {
 namespace {
 
+/// An inner vertex in only two quads, (v, a, x, b) and (v, b, y, a), makes them share two
+/// edges: their corners at v add up to a full turn, so on a flat part one of them is folded
+/// whatever the smoothing does. The two quads become one, (a, x, b, y), and v goes (repeated
+/// while any is left). Returns how many went.
+int dissolveTwoValentVertices(QuadMesh& mesh) {
+  int dissolved = 0;
+  for (bool again = true; again;) {
+    again = false;
+    std::vector<std::vector<int>> quadsOf(mesh.positions.size());
+    for (int q = 0; q < mesh.numQuads(); ++q)
+      for (int v : mesh.quads[q]) quadsOf[v].push_back(q);
+    std::vector<char> goneQuad(mesh.quads.size(), 0), goneVertex(mesh.positions.size(), 0), touched(mesh.quads.size(), 0);
+    for (int v = 0; v < mesh.numVertices(); ++v) {
+      if (quadsOf[v].size() != 2) continue;
+      const int qa = quadsOf[v][0], qb = quadsOf[v][1];
+      if (touched[qa] || touched[qb]) continue;
+      auto rotated = [&](int q) {
+        std::array<int, 4> f = mesh.quads[q];
+        while (f[0] != v) std::rotate(f.begin(), f.begin() + 1, f.end());
+        return f;
+      };
+      const std::array<int, 4> A = rotated(qa), B = rotated(qb);  // (v, a, x, b), (v, b, y, a)
+      if (B[1] != A[3] || B[3] != A[1] || A[2] == B[2]) continue;
+      mesh.quads[qa] = {A[1], A[2], A[3], B[2]};
+      goneQuad[qb] = 1;
+      goneVertex[v] = 1;
+      touched[qa] = touched[qb] = 1;
+      ++dissolved;
+      again = true;
+    }
+    if (!again) break;
+    std::vector<int> index(mesh.positions.size(), -1);
+    std::vector<Vec3> positions;
+    for (int v = 0; v < mesh.numVertices(); ++v)
+      if (!goneVertex[v]) index[v] = int(positions.size()), positions.push_back(mesh.positions[v]);
+    std::vector<std::array<int, 4>> quads;
+    std::vector<int> patches;
+    for (int q = 0; q < mesh.numQuads(); ++q) {
+      if (goneQuad[q]) continue;
+      std::array<int, 4> f = mesh.quads[q];
+      for (int& v : f) v = index[v];
+      quads.push_back(f);
+      if (q < int(mesh.quadPatch.size())) patches.push_back(mesh.quadPatch[q]);
+    }
+    mesh.positions = std::move(positions);
+    mesh.quads = std::move(quads);
+    mesh.quadPatch = std::move(patches);
+  }
+  return dissolved;
+}
+
 /// One pass of the stage at one target edge length; `surface` is the topology of the layout's
 /// triangles, which the quad mesh must have.
 QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options,
@@ -45,6 +96,7 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     r.lengths = solveLengths(r.graph);
   }
   r.mesh = samplePatches(layout, r.graph, r.lengths);
+  r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
   r.sampledPositions = r.mesh.positions;
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
   r.report = checkQuadMesh(r.mesh);

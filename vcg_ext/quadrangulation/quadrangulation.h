@@ -22,6 +22,8 @@ struct QuadrangulationResult {
   /// then solved once more without the bound on how coarse a segment may be sampled.
   bool stretchBoundDropped = false;
   int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
+  /// Inner vertices in only two quads, which were merged into one (dissolveTwoValentVertices).
+  int dissolvedVertices = 0;
   SmoothingReport smoothing;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
