@@ -16,7 +16,8 @@
 // the parallelogram completions of its quads, its neighbours' average and its quads' centre (on
 // the surface), then a pattern search in the tangent plane, and keeps the position that most
 // lowers the quads' shortfall below the threshold (folds weighing ten times more) without
-// folding any quad, worsening a folded one or taking a good one below 0.02; folds left in clusters are smoothed as regions of 2, 4 and 8 rings, kept
+// folding any quad, worsening a folded one or taking a good one below 0.02; folds left in
+// clusters are smoothed as regions of 2, 4 and 8 rings, kept
 // only when fewer quads are folded and none newly. What cannot be unfolded stays (counted by
 // the caller: quad.inverted_quads).
 #pragma once
