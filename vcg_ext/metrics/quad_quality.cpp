@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace fcql {
 
@@ -189,9 +190,14 @@ SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex
     }
     surfaceTriangles.push_back(tri);
   }
+  // The two ways on two threads where there are two, each with its own result, then merged.
+  SurfaceDeviation other;
+  std::thread second([&] { measureOneWay(surfacePositions, surfaceTriangles, quadIndex, limit, resolution, other); });
   measureOneWay(quads.positions, triangles, surfaceIndex, limit, resolution, d);
-  measureOneWay(surfacePositions, surfaceTriangles, quadIndex, limit, resolution, d);
-  d.bound = std::max(d.bound, d.distance);
+  second.join();
+  d.distance = std::max(d.distance, other.distance);
+  d.bound = std::max({d.bound, other.bound, d.distance});
+  d.farPoints.insert(d.farPoints.end(), other.farPoints.begin(), other.farPoints.end());
   return d;
 }
 
@@ -254,9 +260,24 @@ void QuadJacobian::values(const std::vector<int>& quads, std::vector<double>& ou
 }
 
 void QuadJacobian::all(std::vector<double>& out) const {
-  std::vector<int> every(mesh_.quads.size());
-  for (std::size_t q = 0; q < every.size(); ++q) every[q] = int(q);
-  values(every, out);
+  // Each quad's unit normal once, then each vertex's normal from them.
+  const auto& P = mesh_.positions;
+  std::vector<Vec3> quadNormal(mesh_.quads.size());
+  for (std::size_t q = 0; q < quadNormal.size(); ++q) {
+    const auto& f = mesh_.quads[q];
+    const Vec3 n = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
+    const double l = n.norm();
+    quadNormal[q] = l > 0 ? Vec3(n / l) : Vec3(Vec3::Zero());
+  }
+  std::vector<Vec3> normal(P.size(), Vec3::Zero());
+  for (std::size_t v = 0; v < P.size(); ++v) {
+    for (int q : quadsOf_[v]) normal[v] += quadNormal[q];
+    const double l = normal[v].norm();
+    normal[v] = l > 0 ? Vec3(normal[v] / l) : Vec3(Vec3::Zero());
+  }
+  out.resize(mesh_.quads.size());
+  for (std::size_t q = 0; q < out.size(); ++q)
+    out[q] = evaluate(int(q), [&](int v) -> const Vec3& { return normal[v]; });
 }
 
 void QuadJacobian::dependents(int v, std::vector<int>& out) const {
