@@ -609,6 +609,30 @@ TEST(Quadrangulation, ASmoothingStepThatWouldFoldAQuadIsNotTaken) {
   for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(jacobian(q), 0.1) << "quad " << q;
 }
 
+TEST(Quadrangulation, AnInnerVertexInTwoQuadsIsDissolved) {
+  // Two quads (v, a, x, b) and (v, b, y, a) around v = (0, 0): whatever v does, one of them is
+  // folded on the plane. They become the diamond (a, x, b, y); a grid keeps all its vertices.
+  QuadMesh pair;
+  pair.positions = {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0)};
+  pair.quads = {{0, 1, 2, 3}, {0, 3, 4, 1}};
+  pair.quadPatch = {7, 8};
+  EXPECT_EQ(dissolveTwoValentVertices(pair), 1);
+  ASSERT_EQ(pair.numQuads(), 1);
+  ASSERT_EQ(pair.numVertices(), 4);
+  EXPECT_EQ(pair.quadPatch, std::vector<int>{7});
+  const std::array<Vec3, 4> expected = {Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0)};
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(pair.positions[pair.quads[0][i]], expected[i]) << "corner " << i;
+  EXPECT_GT(scaledJacobian(pair, 0), 0.99);
+  QuadMesh grid;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 2; ++i) grid.positions.push_back(Vec3(i, j, 0));
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) grid.quads.push_back({3 * j + i, 3 * j + i + 1, 3 * (j + 1) + i + 1, 3 * (j + 1) + i});
+  EXPECT_EQ(dissolveTwoValentVertices(grid), 0);
+  EXPECT_EQ(grid.numQuads(), 4);
+  EXPECT_EQ(grid.numVertices(), 9);
+}
+
 TEST(Quadrangulation, AQuadTurnedAgainstTheSurfaceCountsAsFolded) {
   // A 3×3 grid on z = 0 whose centre quad is turned over: its four corners mirrored across
   // x = 1.5 and lifted, so it faces −z while agreeing with its own normal at every corner.

@@ -10,12 +10,7 @@
 #include <stdexcept>
 
 namespace fcql {
-namespace {
 
-/// An inner vertex in only two quads, (v, a, x, b) and (v, b, y, a), makes them share two
-/// edges: their corners at v add up to a full turn, so on a flat part one of them is folded
-/// whatever the smoothing does. The two quads become one, (a, x, b, y), and v goes (repeated
-/// while any is left). Returns how many went.
 int dissolveTwoValentVertices(QuadMesh& mesh) {
   int dissolved = 0;
   for (bool again = true; again;) {
@@ -62,6 +57,9 @@ int dissolveTwoValentVertices(QuadMesh& mesh) {
   }
   return dissolved;
 }
+
+namespace {
+
 
 /// One pass of the stage at one target edge length; `surface` is the topology of the layout's
 /// triangles, which the quad mesh must have.

@@ -60,6 +60,12 @@ struct QuadrangulationOptions {
 /// with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
 
+/// An inner vertex in only two quads, (v, a, x, b) and (v, b, y, a), makes them share two
+/// edges: their corners at v add up to a full turn, so on a flat part one of them is folded
+/// whatever the smoothing does. The two quads become one, (a, x, b, y), and v goes (repeated
+/// while any is left; vertices and quads are renumbered, quadPatch kept). Returns how many went.
+int dissolveTwoValentVertices(QuadMesh& mesh);
+
 /// Log lines about the distance check of a result made with `options`: how often and how far
 /// the target was lowered, and why a finer pass failed (none if nothing happened).
 std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const QuadrangulationOptions& options);
