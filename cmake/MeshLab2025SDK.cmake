@@ -1,11 +1,11 @@
 # Locates (and, the first time, builds) the MeshLab 2025.07 SDK used by the FilterPlugin adapter
 # and the pymeshlab-like host (FCQL_BUILD_PLUGIN_2025=ON). scripts/meshlab2025_sdk.sh builds
 # MeshLab's libmeshlab-common.so and io_base from Debian's source package into a cache outside
-# the build tree (default /var/cache/fcql/meshlab-2025.07, or $FCQL_MESHLAB2025_CACHE), once;
+# the build tree (default /var/cache/fcql/meshlab-2025.07d, or $FCQL_MESHLAB2025_CACHE), in double precision, once;
 # this module runs it at configure time when the cache has no stamp (FCQL_MESHLAB2025_AUTO_BUILD)
 # and defines:
 #   fcql::meshlab2025_common   imported target: the library, its headers (src/common, vcglib),
-#                              MESHLAB_VERSION=2025.07 and MESHLAB_SCALAR=float (the loader
+#                              MESHLAB_VERSION=2025.07 and MESHLAB_SCALAR=double (the loader
 #                              compares both with its own)
 #   FCQL_MESHLAB2025_DIR       the cache folder
 #   FCQL_MESHLAB2025_PLUGINS   folder with MeshLab's own plugins (libio_base.so)
@@ -14,7 +14,7 @@
 if(DEFINED ENV{FCQL_MESHLAB2025_CACHE})
   set(_fcql_ml2025_default "$ENV{FCQL_MESHLAB2025_CACHE}")
 else()
-  set(_fcql_ml2025_default "/var/cache/fcql/meshlab-2025.07")
+  set(_fcql_ml2025_default "/var/cache/fcql/meshlab-2025.07d")
 endif()
 set(FCQL_MESHLAB2025_DIR "${_fcql_ml2025_default}" CACHE PATH
     "MeshLab 2025.07 SDK cache built by scripts/meshlab2025_sdk.sh")
@@ -45,6 +45,12 @@ if(NOT EXISTS "${_fcql_ml2025_stamp}" OR NOT EXISTS "${_fcql_ml2025_lib}"
                       "scripts/meshlab2025_sdk.sh (or set FCQL_MESHLAB2025_DIR / "
                       "FCQL_MESHLAB2025_CACHE), or configure with -DFCQL_BUILD_PLUGIN_2025=OFF.")
 endif()
+file(READ "${_fcql_ml2025_stamp}" _fcql_ml2025_stamp_text)
+if(NOT _fcql_ml2025_stamp_text MATCHES "scalar=double")
+  message(FATAL_ERROR "${FCQL_MESHLAB2025_DIR} holds a single-precision MeshLab 2025.07 (an older cache): "
+                      "pymeshlab loads only double-precision plugins. Configure with "
+                      "-DFCQL_MESHLAB2025_DIR=/var/cache/fcql/meshlab-2025.07d (built on first use).")
+endif()
 set(FCQL_MESHLAB2025_PLUGINS "${FCQL_MESHLAB2025_DIR}/lib/plugins")
 
 find_package(Qt5 5.15 REQUIRED COMPONENTS Core Gui Widgets OpenGL Xml Network)
@@ -55,6 +61,6 @@ if(NOT TARGET fcql::meshlab2025_common)
   set_target_properties(fcql::meshlab2025_common PROPERTIES
     IMPORTED_LOCATION "${_fcql_ml2025_lib}"
     INTERFACE_INCLUDE_DIRECTORIES "${_fcql_ml2025_src};${_fcql_ml2025_src}/vcglib"
-    INTERFACE_COMPILE_DEFINITIONS "MESHLAB_VERSION=2025.07;MESHLAB_SCALAR=float"
+    INTERFACE_COMPILE_DEFINITIONS "MESHLAB_VERSION=2025.07;MESHLAB_SCALAR=double"
     INTERFACE_LINK_LIBRARIES "Qt5::Core;Qt5::Gui;Qt5::Widgets;Qt5::OpenGL;Qt5::Xml;GLEW::GLEW;Eigen3::Eigen")
 endif()

@@ -1,5 +1,7 @@
 #include "compute_field_step.h"
 
+#include "field/field_io.h"
+
 #include <cstdio>
 #include <utility>
 
@@ -15,7 +17,10 @@ FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params
 
   progress(10, "cross field");
   auto t1 = Clock::now();
-  if (params.useExisting && hasFaceField(cm)) {
+  if (!params.fieldFile.empty()) {
+    r.field = fcql::loadField(r.converted.mesh, params.fieldFile);  // throws FieldError
+    r.fieldFile = params.fieldFile;
+  } else if (params.useExisting && hasFaceField(cm)) {
     r.field = readFaceField(cm, r.converted);
     r.keptExistingField = true;
   } else {
@@ -85,7 +90,9 @@ std::vector<std::string> describeFieldStep(const FieldStepResult& r,
                   std::to_string(m.genus()) + ", " + std::to_string(m.numBorderLoops()) +
                   " border loops");
   if (!r.converted.weldingNote.empty()) lines.push_back("Mesh: " + r.converted.weldingNote);
-  if (r.keptExistingField) {
+  if (!r.fieldFile.empty()) {
+    lines.push_back("Cross field: read from " + r.fieldFile);
+  } else if (r.keptExistingField) {
     lines.push_back("Cross field: kept the field already on the mesh (per-face PD1/PD2)");
   } else {
     char angle[32];

@@ -32,6 +32,7 @@ struct FieldStepResult {
   fcql::CrossField field;
   fcql::FieldAnalysis analysis;
   bool keptExistingField = false;     ///< the field came from the mesh's PD1
+  std::string fieldFile;              ///< the field came from this file (if not empty)
   bool existingFieldMissing = false;  ///< use_existing was asked but the mesh had no field
   fcql::FieldGenerationReport generation;
   double conversionSeconds = 0, fieldSeconds = 0, analysisSeconds = 0;

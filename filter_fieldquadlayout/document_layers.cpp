@@ -95,6 +95,9 @@ MeshModel* addTriangleLayer(MeshDocument& md, const QString& label, const Triang
   if (!d.facePatch.empty()) mask |= MeshModel::MM_FACECOLOR;
   if (!d.faceQuality.empty()) mask |= MeshModel::MM_FACEQUALITY;
   if (!d.vertexQuality.empty()) mask |= MeshModel::MM_VERTQUALITY;
+  // Quads as triangle pairs whose shared diagonal is faux: flagged polygonal, as MeshLab's own
+  // polygonal filters do, so that MeshLab and pymeshlab save them as quads.
+  if (!d.faux.empty()) mask |= MeshModel::MM_POLYGONAL;
   if (mask) mm->updateDataMask(mask);
   CMeshO& cm = mm->cm;
   auto v = vcg::tri::Allocator<CMeshO>::AddVertices(cm, d.positions.size());

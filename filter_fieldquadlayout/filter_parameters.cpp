@@ -9,6 +9,7 @@ namespace fcql_meshlab {
 // Out-of-line definitions of the constants (needed in C++14 when they are odr-used).
 constexpr const char* FieldParameters::kSharpAngle;
 constexpr const char* FieldParameters::kUseExisting;
+constexpr const char* FieldParameters::kFieldFile;
 constexpr double FieldParameters::kDefaultSharpAngle;
 constexpr double FieldParameters::kMinSharpAngle;
 constexpr double FieldParameters::kMaxSharpAngle;
@@ -75,6 +76,14 @@ void addFieldParameters(RichParameterList& list) {
       "If the mesh already has a per-face cross field (per-face curvature directions PD1/PD2, "
       "e.g. loaded from a .ffield/.rosy file or left by a previous run), keep it and only "
       "analyse it (singularities and ports). If the mesh has none, a new field is computed."));
+  addOpenFileParameter(
+      list, QString(FieldParameters::kFieldFile), QStringLiteral("*.ffield *.rosy"),
+      "Cross field file",
+      "A cross field to read instead of computing one: a .ffield (vcglib frame field) or .rosy "
+      "(4-RoSy) file with one direction per face, in the mesh's face order, as `fcql field "
+      "--field` reads it. Empty (the default): no file. A file of the wrong face count, "
+      "truncated, with NaNs or zero vectors makes the filter fail and leaves the mesh as it "
+      "was. Takes precedence over 'Use existing field'.");
 }
 
 FieldParameters readFieldParameters(const RichParameterList& list) {
@@ -84,6 +93,9 @@ FieldParameters readFieldParameters(const RichParameterList& list) {
                                      FieldParameters::kMaxSharpAngle, "sharp angle in degrees");
   requirePresent(list, FieldParameters::kUseExisting);
   p.useExisting = list.getBool(QString(FieldParameters::kUseExisting));
+  // Absent in scripts written before it existed: no file then.
+  if (list.hasParameter(QString(FieldParameters::kFieldFile)))
+    p.fieldFile = list.getOpenFileName(QString(FieldParameters::kFieldFile)).toStdString();
   return p;
 }
 

@@ -12,6 +12,7 @@
 #include "meshlab_api.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace fcql_meshlab {
 
@@ -23,12 +24,14 @@ struct ParameterError : std::invalid_argument {
 struct FieldParameters {
   static constexpr const char* kSharpAngle = "sharp_angle";
   static constexpr const char* kUseExisting = "use_existing";
+  static constexpr const char* kFieldFile = "field_file";
   static constexpr double kDefaultSharpAngle = 35.0;
   static constexpr double kMinSharpAngle = 0.0;
   static constexpr double kMaxSharpAngle = 180.0;
 
   double sharpAngleDeg = kDefaultSharpAngle;  ///< dihedral angle above which an edge is a feature
   bool useExisting = false;                   ///< keep the field already in PD1/PD2, if any
+  std::string fieldFile;                      ///< a .ffield/.rosy to read (empty: none)
 };
 
 void addFieldParameters(RichParameterList& list);

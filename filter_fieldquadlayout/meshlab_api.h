@@ -28,6 +28,17 @@
 
 namespace fcql_meshlab {
 
+/// A file-name parameter for opening a file (RichOpenFile in 2020.09, RichFileOpen from 2021
+/// on); its value is read with getOpenFileName in both.
+inline void addOpenFileParameter(RichParameterList& list, const QString& name, const QString& extensions,
+                                 const QString& label, const QString& tooltip) {
+#if FCQL_MESHLAB_API >= 2022
+  list.addParam(RichFileOpen(name, QString(), QStringList() << extensions, label, tooltip));
+#else
+  list.addParam(RichOpenFile(name, QString(), QStringList() << extensions, label, tooltip));
+#endif
+}
+
 /// Bounding box and normals after the coordinates changed (UpdateBoxAndNormals in 2020.09,
 /// updateBoxAndNormals from 2021 on).
 inline void updateBoxAndNormals(MeshModel& mm) {

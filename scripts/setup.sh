@@ -9,7 +9,8 @@ source "$here/scripts/lib/debian.bash"
 
 packages=(build-essential cmake pkg-config ca-certificates xz-utils
           meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
-          liblpsolve55-dev libgtest-dev xvfb xauth xdotool imagemagick zlib1g-dev python3 time)
+          liblpsolve55-dev libgtest-dev xvfb xauth xdotool imagemagick zlib1g-dev python3 time
+          clang libclang-rt-14-dev python3-numpy)
 
 install_missing_packages setup "${packages[@]}"
 

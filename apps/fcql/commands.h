@@ -12,6 +12,7 @@
 #include "tracing/separatrix_graph.h"
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -28,6 +29,10 @@ struct FieldStage {
   double seconds = 0;
 };
 
+/// Throws UsageError unless --out is given and names a directory that exists and can be written,
+/// or can be created: checked before any work, so a long run never ends on a bad --out.
+void requireOutputDir(const CommandLine& cl);
+
 /// Progress and information lines on stderr, silenced by --quiet.
 void progress(bool quiet, const std::string& line);
 
@@ -39,7 +44,10 @@ void recordTotalTime(StatsJson& stats, Clock::time_point start, Clock::time_poin
 
 /// Loads MESH (first positional) or builds --example NAME, then reads --field or computes a
 /// field (--sharp-angle), analyses it and records mesh.* field.* time_s.field in `stats`.
-FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet);
+/// `checkMesh`, if given, sees the mesh as soon as it is loaded, before the field is computed
+/// (to refuse options that the mesh makes impossible before any work).
+FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet,
+                         const std::function<void(const SurfaceMesh&)>& checkMesh = nullptr);
 
 /// What the tracing stage (graph G, searches, graph H) produced.
 struct TraceStage {
@@ -72,6 +80,9 @@ struct QuadStage {
   QuadMeshReport report;
   double seconds = 0;
 };
+/// The target quad edge of --scale or --target-faces on `mesh`; throws UsageError if it asks for
+/// more quads than the quad stage can hold (saying which value is the finest allowed).
+double quadTargetEdge(const SurfaceMesh& mesh, const CommandLine& cl);
 QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const CommandLine& cl, StatsJson& stats, bool quiet);
 
 int fieldCommand(int argc, char** argv);

@@ -8,10 +8,17 @@
 #include "mesh/mesh_io.h"
 #include "mesh/vertex_welding.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
 namespace fcql {
+
+void requireOutputDir(const CommandLine& cl) {
+  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  const std::string problem = OutputDir::problem(cl.value("out"));
+  if (!problem.empty()) throw UsageError(problem);
+}
 
 void progress(bool quiet, const std::string& line) {
   if (!quiet) std::cerr << "fcql: " << line << std::endl;
@@ -23,7 +30,8 @@ void recordTotalTime(StatsJson& stats, Clock::time_point start, Clock::time_poin
   stats.set("time_s.total", std::chrono::duration<double>(now - start).count());
 }
 
-FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
+FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet,
+                         const std::function<void(const SurfaceMesh&)>& checkMesh) {
   const auto& pos = cl.positional();
   bool example = cl.has("example");
   if (example && !pos.empty()) throw UsageError("give either a MESH file or --example NAME, not both");
@@ -35,6 +43,12 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
   auto start = std::chrono::steady_clock::now();
   if (example) {
     s.meshName = "example:" + cl.value("example");
+    const auto names = exampleNames();
+    if (std::find(names.begin(), names.end(), cl.value("example")) == names.end()) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw UsageError("unknown --example '" + cl.value("example") + "' (choose one of: " + list + ")");
+    }
     s.mesh = makeExample(cl.value("example"));
   } else {
     s.meshName = pos[0];
@@ -44,6 +58,7 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
     if (welding.welded) s.mesh = std::move(welding.mesh);
     stats.set("mesh.welded_vertices", welding.welded ? welding.merged : 0);
   }
+  if (checkMesh) checkMesh(s.mesh);
   progress(quiet, "mesh " + s.meshName + ": " + std::to_string(s.mesh.numFaces()) + " faces, " +
                       std::to_string(s.mesh.numVertices()) + " vertices, genus " + std::to_string(s.mesh.genus()) +
                       ", " + std::to_string(s.mesh.numBorderLoops()) + " border loops");
@@ -94,12 +109,12 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet) {
 
 int fieldCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "out", "example"}, {"quiet"});
-  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   StatsJson stats;
   FieldStage s = runFieldStage(cl, stats, quiet);
   OutputDir out(cl.value("out"));
-  saveFField(s.mesh, s.field, out.stage("field.ffield"));
+  out.write("field.ffield", [&](const std::string& path) { saveFField(s.mesh, s.field, path); });
   out.writeText("stats.json", stats.toString());
   out.commit();
   progress(quiet, "wrote " + out.finalPath("field.ffield") + " and " + out.finalPath("stats.json"));

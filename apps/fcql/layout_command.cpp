@@ -72,7 +72,7 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
 int layoutCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
                  {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall"}, {"quiet"});
-  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   TracingParameters tp = readTracingParameters(cl);
   LayoutParameters lp = readLayoutParameters(cl);
@@ -83,7 +83,7 @@ int layoutCommand(int argc, char** argv) {
   LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
   const auto outputStart = Clock::now();
   OutputDir out(cl.value("out"));
-  saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
+  out.write("field.ffield", [&](const std::string& path) { saveFField(fs.mesh, fs.field, path); });
   out.writeText("candidates.obj", candidatesObj(ts.h));
   out.writeText("separatrices.obj", separatricesToObj(ls.layout));
   out.writeText("layout.ply", patchLayoutToPly(ls.patches));

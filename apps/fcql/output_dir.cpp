@@ -4,10 +4,26 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace fcql {
+
+std::string OutputDir::problem(const std::string& dir) {
+  if (dir.empty()) return "--out needs a directory name";
+  std::error_code ec;
+  fs::path at = fs::absolute(fs::path(dir), ec);
+  if (ec) return dir + ": not a usable path (" + ec.message() + ")";
+  // The nearest part of the path that exists must be a directory we may write into.
+  while (!fs::exists(fs::symlink_status(at, ec)) && at.has_parent_path() && at != at.parent_path()) at = at.parent_path();
+  if (fs::exists(at, ec) && !fs::is_directory(at, ec))
+    return dir + ": " + (at == fs::absolute(fs::path(dir)) ? std::string("is a file, not a directory")
+                                                             : at.string() + " is a file, not a directory");
+  if (access(at.c_str(), W_OK | X_OK) != 0)
+    return dir + ": cannot write into " + at.string() + " (permission denied)";
+  return "";
+}
 
 OutputDir::OutputDir(const std::string& dir) : dir_(dir) {
   std::error_code ec;
@@ -24,6 +40,13 @@ OutputDir::~OutputDir() {
 std::string OutputDir::stage(const std::string& name) {
   names_.push_back(name);
   return dir_ + "/." + name + ".partial";
+}
+
+std::string OutputDir::withFinalName(std::string message, const std::string& name) const {
+  const std::string partial = dir_ + "/." + name + ".partial";
+  for (std::size_t at = message.find(partial); at != std::string::npos; at = message.find(partial, at))
+    message.replace(at, partial.size(), finalPath(name));
+  return message;
 }
 
 void OutputDir::writeText(const std::string& name, const std::string& text) {

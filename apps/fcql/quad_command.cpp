@@ -14,19 +14,40 @@
 
 namespace fcql {
 
+namespace {
+
+/// The most quads a run may ask for: the quad stage took 1.14 GB for 2M quads (a sphere), so
+/// 20M take about 11 GB, within a 16 GB machine.
+constexpr long kMaxQuads = 20000000;
+
+}  // namespace
+
+double quadTargetEdge(const SurfaceMesh& mesh, const CommandLine& cl) {
+  double area = 0;
+  for (int f = 0; f < mesh.numFaces(); ++f) area += mesh.faceArea(f);
+  if (cl.has("target-faces")) {
+    const int faces = cl.integer("target-faces", 1000, 1, int(kMaxQuads));
+    return std::sqrt(area / faces);
+  }
+  const double scale = cl.number("scale", 0.02, 1e-5, 1.0);
+  const double target = scale * mesh.boundingBoxDiagonal();
+  const double quads = area / (target * target);
+  if (quads > double(kMaxQuads)) {
+    const double smallest = std::sqrt(area / double(kMaxQuads)) / mesh.boundingBoxDiagonal();
+    char line[300];
+    std::snprintf(line, sizeof line,
+                  "--scale %g asks for about %.3g quads on this surface, more than the limit of %ld; use --scale %.2g or "
+                  "larger, or --target-faces %ld or fewer",
+                  scale, quads, kMaxQuads, smallest * 1.01, kMaxQuads);
+    throw UsageError(line);
+  }
+  return target;
+}
+
 QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const CommandLine& cl, StatsJson& stats, bool quiet) {
   QuadStage qs;
   auto start = std::chrono::steady_clock::now();
-  double diagonal = fs.mesh.boundingBoxDiagonal();
-  double target;
-  if (cl.has("target-faces")) {
-    int faces = cl.integer("target-faces", 1000, 1, 100000000);
-    double area = 0;
-    for (int f = 0; f < fs.mesh.numFaces(); ++f) area += fs.mesh.faceArea(f);
-    target = std::sqrt(area / faces);
-  } else {
-    target = cl.number("scale", 0.02, 1e-5, 1.0) * diagonal;
-  }
+  const double target = quadTargetEdge(fs.mesh, cl);
   progress(quiet, "quadrangulating: integer side lengths (target quad edge " + std::to_string(target) + ")");
   QuadrangulationOptions options;
   options.targetEdgeLength = target;
@@ -34,6 +55,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   options.smoothing.iterations = cl.integer("smooth", 5, 0, 1000);
   options.smoothing.sharpAngleDeg = cl.number("sharp-angle", 35.0, 0.0, 180.0);
   options.maxDeviation = cl.number("max-deviation", 0.01, 0.0, 1.0);
+  options.maxQuads = kMaxQuads;
   QuadrangulationResult r = quadrangulate(ls.patches, options);
   for (const std::string& note : refinementNotes(r, options)) progress(quiet, note);
   qs.graph = std::move(r.graph);
@@ -107,18 +129,19 @@ int quadCommand(int argc, char** argv) {
                  {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall", "scale",
                   "target-faces", "smooth", "max-deviation"},
                  {"quiet"});
-  if (!cl.has("out")) throw UsageError("missing --out DIR");
+  requireOutputDir(cl);
   if (cl.has("scale") && cl.has("target-faces")) throw UsageError("give --scale or --target-faces, not both");
   bool quiet = cl.has("quiet");
   TracingParameters tp = readTracingParameters(cl);
   LayoutParameters lp = readLayoutParameters(cl);
   cl.number("scale", 0.02, 1e-5, 1.0);
-  cl.integer("target-faces", 1000, 1, 100000000);
+  cl.integer("target-faces", 1000, 1, int(kMaxQuads));
   cl.integer("smooth", 5, 0, 1000);
   cl.number("max-deviation", 0.01, 0.0, 1.0);
   StatsJson stats;
   auto start = std::chrono::steady_clock::now();
-  FieldStage fs = runFieldStage(cl, stats, quiet);
+  // A quad count out of reach fails as soon as the mesh is loaded, not after the layout.
+  FieldStage fs = runFieldStage(cl, stats, quiet, [&cl](const SurfaceMesh& mesh) { quadTargetEdge(mesh, cl); });
   TraceStage ts = runTraceStage(fs, tp, stats, quiet);
   LayoutStage ls = runLayoutStage(fs, ts, lp, stats, quiet);
   // The layout's files are formatted on another thread while the quad stage runs (the graph H
@@ -136,7 +159,7 @@ int quadCommand(int argc, char** argv) {
   const auto outputStart = Clock::now();
   const LayoutTexts layoutTexts = texts.get();
   OutputDir out(cl.value("out"));
-  saveFField(fs.mesh, fs.field, out.stage("field.ffield"));
+  out.write("field.ffield", [&](const std::string& path) { saveFField(fs.mesh, fs.field, path); });
   out.writeText("candidates.obj", layoutTexts.candidates);
   out.writeText("separatrices.obj", layoutTexts.separatrices);
   out.writeText("layout.ply", layoutTexts.layout);

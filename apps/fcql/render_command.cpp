@@ -8,6 +8,8 @@
 #include "command_line.h"
 #include "commands.h"
 
+#include "mesh/input_file.h"
+#include "mesh/ply_reader.h"
 #include "render/png.h"
 #include "render/rasterizer.h"
 
@@ -47,115 +49,31 @@ struct Dot {
 };
 
 std::string readWhole(const std::string& path) {
-  struct stat st;
-  if (stat(path.c_str(), &st) != 0) throw std::runtime_error(path + ": no such file");
-  if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string bytes, error;
+  if (!readRegularFile(path, bytes, error)) throw std::runtime_error(error);
+  return bytes;
 }
 
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
-// ASCII PLY as layout.ply writes it: vertex x y z (+ anything), face with a vertex_indices list
-// and an int `patch`. Properties are found by name; other elements are skipped.
+// layout.ply (any PLY with a per-face scalar `patch`), through the project's strict PLY reader.
 LayoutScene readLayoutPly(const std::string& path) {
-  std::istringstream in(readWhole(path));
-  auto fail = [&](const std::string& why) -> std::runtime_error { return std::runtime_error(path + ": " + why); };
-  struct Element {
-    std::string name;
-    long count = 0;
-    std::vector<std::string> properties;  // "list" properties are marked with a leading '*'
-  };
-  std::vector<Element> elements;
-  std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) throw fail("not a PLY file");
-  bool ascii = false, ended = false;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string word;
-    words >> word;
-    if (word == "format") {
-      words >> word;
-      ascii = word == "ascii";
-    } else if (word == "element") {
-      Element e;
-      if (!(words >> e.name >> e.count) || e.count < 0) throw fail("bad element line '" + line + "'");
-      elements.push_back(e);
-    } else if (word == "property") {
-      if (elements.empty()) throw fail("property before any element");
-      std::string type, name;
-      words >> type;
-      if (type == "list") {
-        std::string countType, itemType;
-        words >> countType >> itemType >> name;
-        name = "*" + name;
-      } else {
-        words >> name;
-      }
-      elements.back().properties.push_back(name);
-    } else if (word == "end_header") {
-      ended = true;
-      break;
-    }
+  PlyPolygons ply;
+  try {
+    ply = parsePly(readWhole(path), path, {"patch"});
+  } catch (const MeshError& e) {
+    throw std::runtime_error(e.what());
   }
-  if (!ended) throw fail("PLY header has no end_header");
-  if (!ascii) throw fail("only ASCII PLY is supported (as fcql writes it)");
   LayoutScene scene;
-  bool sawFaces = false;
-  for (const Element& e : elements) {
-    auto find = [&](const std::string& name) {
-      auto it = std::find(e.properties.begin(), e.properties.end(), name);
-      return it == e.properties.end() ? -1 : int(it - e.properties.begin());
-    };
-    int ix = find("x"), iy = find("y"), iz = find("z"), list = find("*vertex_indices"), ipatch = find("patch");
-    if (list < 0) list = find("*vertex_index");
-    if (e.name == "vertex" && (ix < 0 || iy < 0 || iz < 0)) throw fail("vertices lack x, y or z");
-    if (e.name == "face" && (list < 0 || ipatch < 0)) throw fail("faces lack vertex_indices or the per-face patch");
-    sawFaces |= e.name == "face";
-    for (long r = 0; r < e.count; ++r) {
-      if (!std::getline(in, line)) throw fail("file ends inside the " + e.name + " records");
-      std::istringstream fields(line);
-      Vec3 p(0, 0, 0);
-      std::vector<long> corners;
-      long patch = 0;
-      for (int k = 0; k < int(e.properties.size()); ++k) {
-        if (e.properties[k][0] == '*') {
-          long n;
-          if (!(fields >> n) || n < 0 || n > 1000) throw fail("bad list in " + e.name + " " + std::to_string(r));
-          for (long i = 0; i < n; ++i) {
-            long v;
-            if (!(fields >> v)) throw fail("bad list in " + e.name + " " + std::to_string(r));
-            if (k == list) corners.push_back(v);
-          }
-          continue;
-        }
-        double value;
-        if (!(fields >> value)) throw fail("bad " + e.name + " record " + std::to_string(r));
-        if (k == ix) p.x() = value;
-        if (k == iy) p.y() = value;
-        if (k == iz) p.z() = value;
-        if (k == ipatch) patch = long(value);
-      }
-      if (e.name == "vertex") {
-        if (!finite(p)) throw fail("vertex " + std::to_string(r) + " is not finite");
-        scene.positions.push_back(p);
-      } else if (e.name == "face") {
-        if (corners.size() < 3) throw fail("face " + std::to_string(r) + " has fewer than 3 corners");
-        for (long v : corners)
-          if (v < 0 || v >= long(scene.positions.size()))
-            throw fail("face " + std::to_string(r) + " has a vertex index out of range");
-        if (patch < 0 || patch > 100000000) throw fail("face " + std::to_string(r) + " has a bad patch id");
-        for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
-          scene.triangles.push_back({int(corners[0]), int(corners[i]), int(corners[i + 1])});
-          scene.patch.push_back(int(patch));
-        }
-      }
+  scene.positions = std::move(ply.positions);
+  for (int f = 0; f < ply.numFaces(); ++f) {
+    const double patch = ply.faceValues[0][f];
+    if (patch < 0 || patch > 100000000) throw std::runtime_error(path + ": face " + std::to_string(f) + " has a bad patch id");
+    for (int i = ply.faceStart[f] + 1; i + 1 < ply.faceStart[f + 1]; ++i) {
+      scene.triangles.push_back({ply.corners[ply.faceStart[f]], ply.corners[i], ply.corners[i + 1]});
+      scene.patch.push_back(int(patch));
     }
   }
-  if (!sawFaces || scene.triangles.empty()) throw fail("no faces");
   return scene;
 }
 

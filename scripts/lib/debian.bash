@@ -18,12 +18,38 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
+# configured_debian_archive: prints the URI of the Debian archive this machine's apt is set up
+# with (the `deb` source that carries the release's own suite, in /etc/apt/sources.list.d/*.sources
+# or /etc/apt/sources.list); fails with a message if there is none. No host is named here.
+configured_debian_archive() {
+  local codename uri
+  codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+  uri=$(cat /etc/apt/sources.list.d/*.sources 2>/dev/null | awk -v c="$codename" '
+    function flush() { if (types ~ /(^| )deb( |$)/ && (" " suites " ") ~ (" " c " ") && uri != "") { print uri; found = 1; exit } types = suites = uri = "" }
+    /^[[:space:]]*$/ { flush(); next }
+    /^Types:/ { sub(/^Types:[[:space:]]*/, ""); types = $0 }
+    /^Suites:/ { sub(/^Suites:[[:space:]]*/, ""); suites = $0 }
+    /^URIs:/ { uri = $2 }
+    END { if (!found) flush() }')
+  if [ -z "$uri" ] && [ -f /etc/apt/sources.list ]; then
+    uri=$(awk -v c="$codename" '$1 == "deb" { i = 2; if ($i ~ /^\[/) { while ($i !~ /\]$/) i++; i++ } if ($(i + 1) == c) { print $i; exit } }' \
+      /etc/apt/sources.list)
+  fi
+  if [ -z "$uri" ]; then
+    echo "no Debian archive for '$codename' is configured in /etc/apt; configure one, then run this again" >&2
+    return 1
+  fi
+  echo "$uri"
+}
+
 # private_apt_source_state DIR SUITE: sets the array PRIVATE_APT to apt-get options that use a
-# package state in DIR with Debian's deb-src SUITE main as the only source, and updates it.
+# package state in DIR with deb-src SUITE main of the machine's configured Debian archive as the
+# only source, and updates it.
 private_apt_source_state() {
-  local dir=$1 suite=$2
+  local dir=$1 suite=$2 archive
+  archive=$(configured_debian_archive) || exit 1
   mkdir -p "$dir/lists/partial"
-  echo "deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian $suite main" > "$dir/src.list"
+  echo "deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] $archive $suite main" > "$dir/src.list"
   PRIVATE_APT=(-o "Dir::Etc::SourceList=$dir/src.list" -o Dir::Etc::SourceParts=/dev/null -o "Dir::State::Lists=$dir/lists")
   apt-get "${PRIVATE_APT[@]}" update -qq
 }

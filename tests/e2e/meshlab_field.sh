@@ -184,6 +184,21 @@ if [ -n "$shared" ] && [ -f "$shared/data/meshes/eight.obj" ]; then
       echo "note: the fcql tool is not available, plugin/CLI comparison skipped"
     fi
   fi
+  # Its shipped field through field_file: 24 singularities (16 of index -1/4, 8 of +1/4), as
+  # `fcql field --field` reads it; a field file of the wrong face count fails and names it.
+  sed "s|name=\"field_file\" value=\"\"|name=\"field_file\" value=\"$shared/data/meshes/eight.ffield\"|" \
+    "$script" >"$work/eight_field.mlx"
+  grep -q 'eight.ffield' "$work/eight_field.mlx" || fail "could not write eight_field.mlx"
+  run_server "$work/eight_field.log" -i "$work/eight.off" -o "$work/eight_field_out.ply" -m vq -s "$work/eight_field.mlx"
+  line=$(singularity_line "$work/eight_field.log")
+  case "$line" in
+    *"Singularities: 24 (by index: -1/4: 16, 1/4: 8)"*) echo "eight with its field file: $line" ;;
+    *) fail "eight with its field file: $line" ;;
+  esac
+  grep -aq "Cross field: read from .*eight.ffield" "$work/eight_field.log" || fail "eight: the log does not name the field file"
+  printf '3\n4\n1 0 0\n1 0 0\n1 0 0\n' >"$work/short.rosy"
+  sed "s|name=\"field_file\" value=\"\"|name=\"field_file\" value=\"$work/short.rosy\"|" "$script" >"$work/short_field.mlx"
+  expect_failure short_field "$work/eight.off" "$work/short_field.mlx" "the field has 3 faces but the mesh has"
 else
   echo "note: $shared/data/meshes/eight.obj is absent, shared-mesh check skipped"
 fi

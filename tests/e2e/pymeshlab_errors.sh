@@ -4,7 +4,8 @@
 # pymeshlab::FunctionSet as pymeshlab does:
 #  - the loader accepts libfilter_fieldquadlayout2025.so: PluginManager::loadPlugin runs its
 #    checks (Qt plugin, MeshLab plugin, float/double precision, version "2025.0", filter class
-#    and arity) and the plugin says it was built for MeshLab 2025.07 with floats; the 2020.09
+#    and arity) and the plugin says it was built for MeshLab 2025.07 in double precision (as
+#    pymeshlab builds MeshLab); the 2020.09
 #    build, when there is one, is refused;
 #  - the five python names are listed, with parameter names that are Python identifiers;
 #  - pymeshlab's kind of messages: an unknown filter, an unknown parameter ("Parameter X not
@@ -27,7 +28,7 @@ if host "$work/load.out" --plugins "$work/no_plugins" load_plugin "$plugin2025";
   line=$(grep -a '^loaded plugin ' "$work/load.out")
   echo "$line"
   case "$line" in
-    *"built for MeshLab 2025.07 (float), this MeshLab 2025.07 (float)"*) ;;
+    *"built for MeshLab 2025.07 (double), this MeshLab 2025.07 (double)"*) ;;
     *) fail "unexpected version or precision: $line" ;;
   esac
 else

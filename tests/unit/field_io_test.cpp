@@ -57,7 +57,7 @@ TEST(FieldIo, BadFilesGiveClearErrors) {
   EXPECT_NE(parseError("target frame\n2\n1 1 1 0 0 0 1 0\n1 1 x 0 0 0 1 0\n", false).find("not a number"),
             std::string::npos);
   EXPECT_NE(parseError("target frame\n2\n1 1 1 0 0 0 1 0\n1 1 0 0 0 0 0 0\n", false).find("is zero"), std::string::npos);
-  EXPECT_NE(parseError("target frame\n2\n1 1 1 0 0 0 1 0\n1 1 0 0 1 0 0 0\n", false).find("orthogonal to the face"),
+  EXPECT_NE(parseError("target frame\n2\n1 1 1 0 0 0 1 0\n1 1 0 0 1 0 0 0\n", false).find("more than 60 degrees out of the face's plane"),
             std::string::npos);
   EXPECT_NE(parseError("target frame\n2\n1 1 1 0 0\n", false).find("expected 8 numbers"), std::string::npos);
   EXPECT_NE(parseError("2\n4\n1 0 0\n1 0 0\n1 0 0\n", true).find("more faces than the mesh"), std::string::npos);

@@ -1,5 +1,6 @@
 #include "field/field_io.h"
 
+#include "mesh/input_file.h"
 #include "mesh/number_text.h"
 
 #include <cerrno>
@@ -11,12 +12,16 @@
 namespace fcql {
 namespace {
 
+/// The least share of a field vector's length that must lie in its face's plane: sin 30°, i.e.
+/// the vector is at most 60° out of the plane. A field written for the mesh lies in the plane up
+/// to rounding (or a few degrees, if computed on a slightly different surface); a vector nearer
+/// the normal gives its face a direction that rounding alone decides.
+constexpr double kMinTangentialShare = 0.5;
+
 std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FieldError(path + ": cannot open the field file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string bytes, error;
+  if (!readRegularFile(path, bytes, error)) throw FieldError(error + " (the field file)");
+  return bytes;
 }
 
 // Splits text into lines and lines into whitespace-separated tokens, skipping blank lines and
@@ -74,13 +79,20 @@ void checkFaceCount(long count, const SurfaceMesh& mesh, const std::string& name
                      std::to_string(mesh.numFaces()));
 }
 
+// The vector's part in the face's plane, normalised. A vector more than 60° out of the plane
+// gives no reliable direction in the face: it is rejected, as a zero vector is. Components are scaled first so that huge ones (1e300) do not
+// overflow.
 Vec3 faceVector(const SurfaceMesh& mesh, const Vec3& w, int f, const std::string& name, int line) {
+  const double largest = w.cwiseAbs().maxCoeff();
+  auto fail = [&](const std::string& what) {
+    return FieldError(name + ", line " + std::to_string(line) + ": the vector of face " + std::to_string(f) + " " + what);
+  };
+  if (!(largest > 0)) throw fail("is zero");
+  const Vec3 unit = w / largest;
   const Vec3& n = mesh.faceNormal(f);
-  double len = w.norm();
-  Vec3 t = w - n * n.dot(w);
-  if (!(len > 0) || !(t.norm() > 1e-3 * len))
-    throw FieldError(name + ", line " + std::to_string(line) + ": the vector of face " + std::to_string(f) +
-                     (len > 0 ? " is orthogonal to the face" : " is zero"));
+  const Vec3 t = unit - n * n.dot(unit);
+  if (!(t.norm() > kMinTangentialShare * unit.norm()))
+    throw fail("is more than 60 degrees out of the face's plane (nearly along its normal), so it gives no direction in the face");
   return t.normalized();
 }
 

@@ -1,8 +1,8 @@
 #include "mesh/mesh_io.h"
 
-#include <vcg/complex/complex.h>
-#include <wrap/io_trimesh/export.h>
-#include <wrap/io_trimesh/import.h>
+#include "mesh/input_file.h"
+#include "mesh/number_text.h"
+#include "mesh/ply_reader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -13,15 +13,6 @@
 
 namespace fcql {
 namespace {
-
-// A minimal double-precision vcglib mesh used only to read and write files.
-class IoVertex;
-class IoFace;
-struct IoUsedTypes : public vcg::UsedTypes<vcg::Use<IoVertex>::AsVertexType, vcg::Use<IoFace>::AsFaceType> {};
-class IoVertex : public vcg::Vertex<IoUsedTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d,
-                                    vcg::vertex::BitFlags> {};
-class IoFace : public vcg::Face<IoUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class IoMesh : public vcg::tri::TriMesh<std::vector<IoVertex>, std::vector<IoFace>> {};
 
 std::string lowerExtension(const std::string& path) {
   auto dot = path.find_last_of('.');
@@ -130,7 +121,16 @@ RawMesh readOff(const std::string& path, std::istream& file) {
   at = 1;
   long nv = integer("vertex count"), nf = integer("face count");
   integer("edge count");
+  // Each vertex takes 3 tokens and each face at least 4: check before reading any.
+  const long left = long(tokens.size() - at);
+  if (nv > left / 3)
+    throw MeshError(path + ": declares " + std::to_string(nv) + " vertices but the file holds at most " +
+                    std::to_string(left / 3));
+  if (nf > (left - 3 * nv) / 4)
+    throw MeshError(path + ": declares " + std::to_string(nf) + " faces but the file holds at most " +
+                    std::to_string((left - 3 * nv) / 4));
   RawMesh m;
+  m.positions.reserve(std::size_t(nv));
   for (long i = 0; i < nv; ++i) {
     double x = number("coordinate"), y = number("coordinate"), z = number("coordinate");
     m.positions.emplace_back(x, y, z);
@@ -153,75 +153,75 @@ RawMesh readOff(const std::string& path, std::istream& file) {
 
 }  // namespace
 
+SurfaceMesh parseMesh(const std::string& bytes, const std::string& name, const std::string& format) {
+  if (bytes.empty()) throw MeshError(name + ": the file is empty");
+  RawMesh raw;
+  if (format == "ply") {
+    PlyPolygons ply = parsePly(bytes, name);
+    raw.positions = std::move(ply.positions);
+    raw.faces.reserve(ply.corners.size() - 2 * std::size_t(ply.numFaces()));
+    for (int f = 0; f < ply.numFaces(); ++f) {
+      const int* c = ply.corners.data() + ply.faceStart[f];
+      const int n = ply.faceStart[f + 1] - ply.faceStart[f];
+      for (int i = 1; i + 1 < n; ++i) raw.faces.push_back({c[0], c[i], c[i + 1]});
+    }
+  } else if (format == "obj" || format == "off") {
+    std::istringstream file(bytes);
+    raw = format == "obj" ? readObj(name, file) : readOff(name, file);
+  } else {
+    throw MeshError(name + ": unsupported mesh format '." + format + "' (use .obj, .ply or .off)");
+  }
+  if (raw.faces.empty()) throw MeshError(name + ": the file holds no faces");
+  try {
+    return SurfaceMesh(std::move(raw.positions), std::move(raw.faces));
+  } catch (const MeshError& e) {
+    throw MeshError(name + ": " + e.what());
+  }
+}
+
 SurfaceMesh loadMesh(const std::string& path) {
-  std::string ext = lowerExtension(path);
+  const std::string ext = lowerExtension(path);
   if (ext != "obj" && ext != "ply" && ext != "off")
     throw MeshError(path + ": unsupported mesh format '." + ext + "' (use .obj, .ply or .off)");
-  {
-    std::ifstream probe(path);
-    if (!probe) throw MeshError(path + ": cannot open the file");
-    if (probe.peek() == std::ifstream::traits_type::eof()) throw MeshError(path + ": the file is empty");
-  }
-  if (ext == "obj" || ext == "off") {
-    std::ifstream file(path);
-    RawMesh raw = ext == "obj" ? readObj(path, file) : readOff(path, file);
-    if (raw.faces.empty()) throw MeshError(path + ": the file holds no faces");
-    try {
-      return SurfaceMesh(std::move(raw.positions), std::move(raw.faces));
-    } catch (const MeshError& e) {
-      throw MeshError(path + ": " + e.what());
-    }
-  }
-  IoMesh m;
-  int mask = 0;
-  int err = vcg::tri::io::Importer<IoMesh>::Open(m, path.c_str(), mask);
-  if (err != 0 && vcg::tri::io::Importer<IoMesh>::ErrorCritical(err))
-    throw MeshError(path + ": cannot read the mesh (" +
-                    vcg::tri::io::Importer<IoMesh>::ErrorMsg(err) + ")");
-  std::vector<Vec3> positions;
-  std::vector<int> index(m.vert.size(), -1);
-  positions.reserve(m.vn);
-  for (std::size_t i = 0; i < m.vert.size(); ++i) {
-    if (m.vert[i].IsD()) continue;
-    const auto& p = m.vert[i].cP();
-    index[i] = int(positions.size());
-    positions.emplace_back(p[0], p[1], p[2]);
-  }
-  std::vector<std::array<int, 3>> faces;
-  faces.reserve(m.fn);
-  for (auto& f : m.face) {
-    if (f.IsD()) continue;
-    std::array<int, 3> t;
-    for (int c = 0; c < 3; ++c) {
-      if (f.V(c) == nullptr) throw MeshError(path + ": a face refers to a missing vertex");
-      t[c] = index[vcg::tri::Index(m, f.V(c))];
-    }
-    faces.push_back(t);
-  }
-  if (faces.empty()) throw MeshError(path + ": the file holds no faces");
-  try {
-    return SurfaceMesh(std::move(positions), std::move(faces));
-  } catch (const MeshError& e) {
-    throw MeshError(path + ": " + e.what());
-  }
+  std::string bytes, error;
+  if (!readRegularFile(path, bytes, error)) throw MeshError(error);
+  return parseMesh(bytes, path, ext);
 }
 
 void saveMesh(const SurfaceMesh& mesh, const std::string& path) {
   std::string ext = lowerExtension(path);
   if (ext != "obj" && ext != "ply" && ext != "off")
     throw MeshError(path + ": unsupported mesh format '." + ext + "' (use .obj, .ply or .off)");
-  IoMesh m;
-  auto vi = vcg::tri::Allocator<IoMesh>::AddVertices(m, mesh.numVertices());
-  for (int v = 0; v < mesh.numVertices(); ++v, ++vi) {
-    const Vec3& p = mesh.position(v);
-    vi->P() = vcg::Point3d(p.x(), p.y(), p.z());
+  std::string text;
+  const long nv = mesh.numVertices(), nf = mesh.numFaces();
+  if (ext == "ply") {
+    text = "ply\nformat ascii 1.0\ncomment written by fcql\nelement vertex " + std::to_string(nv) +
+           "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(nf) +
+           "\nproperty list uchar int vertex_indices\nend_header\n";
+  } else if (ext == "off") {
+    text = "OFF\n" + std::to_string(nv) + " " + std::to_string(nf) + " 0\n";
   }
-  vcg::tri::Allocator<IoMesh>::AddFaces(m, mesh.numFaces());
-  for (int f = 0; f < mesh.numFaces(); ++f)
-    for (int c = 0; c < 3; ++c) m.face[f].V(c) = &m.vert[mesh.vertex(f, c)];
-  int err = vcg::tri::io::Exporter<IoMesh>::Save(m, path.c_str(), 0);
-  if (err != 0) throw MeshError(path + ": cannot write the mesh (" +
-                                std::string(vcg::tri::io::Exporter<IoMesh>::ErrorMsg(err)) + ")");
+  for (int v = 0; v < nv; ++v) {
+    if (ext == "obj") text += "v ";
+    const Vec3& p = mesh.position(v);
+    for (int c = 0; c < 3; ++c) {
+      if (c > 0) text += ' ';
+      appendNumber(text, p[c], 17);
+    }
+    text += '\n';
+  }
+  for (int f = 0; f < nf; ++f) {
+    text += ext == "obj" ? "f" : "3";
+    for (int c = 0; c < 3; ++c) {
+      text += ' ';
+      appendNumber(text, long(mesh.vertex(f, c)) + (ext == "obj" ? 1 : 0));
+    }
+    text += '\n';
+  }
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw MeshError(path + ": cannot write the mesh");
 }
 
 }  // namespace fcql

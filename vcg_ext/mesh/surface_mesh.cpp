@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <limits>
 #include <sstream>
@@ -17,6 +18,29 @@ std::uint64_t directedKey(int a, int b) {
 }
 
 std::string faceName(int f) { return "face " + std::to_string(f); }
+
+/// The pipeline squares lengths and multiplies areas, so a mesh whose size is far from 1 in
+/// its units underflows or overflows double precision (at 1e-100 every face would look
+/// degenerate, at 1e300 the field would not be finite). Sizes within [kMinExtent, kMaxExtent]
+/// are safe; others are refused with a message that says so and what to do.
+constexpr double kMinExtent = 1e-20, kMaxExtent = 1e20;
+
+void checkCoordinateRange(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& faces) {
+  Vec3 lo = positions[faces[0][0]], hi = lo;
+  for (const auto& t : faces)
+    for (int v : t) lo = lo.cwiseMin(positions[v]), hi = hi.cwiseMax(positions[v]);
+  const double extent = (hi - lo).cwiseAbs().maxCoeff();  // no squares: exact for any finite input
+  const double largest = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  if (extent >= kMinExtent && largest <= kMaxExtent) return;
+  auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return std::string(text);
+  };
+  throw MeshError("the coordinates are out of the supported range: the mesh spans " + number(extent) + " units" +
+                  (largest > kMaxExtent ? " and reaches out to " + number(largest) : std::string()) +
+                  "; scale it to a size between " + number(kMinExtent) + " and " + number(kMaxExtent) + " units");
+}
 
 }  // namespace
 
@@ -36,6 +60,7 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     if (faces_[f][0] == faces_[f][1] || faces_[f][1] == faces_[f][2] || faces_[f][0] == faces_[f][2])
       throw MeshError(faceName(f) + " uses the same vertex twice (degenerate face)");
   }
+  checkCoordinateRange(positions_, faces_);
 
   // Geometry per face; a face whose area is negligible against its longest edge is degenerate.
   normals_.resize(nf);

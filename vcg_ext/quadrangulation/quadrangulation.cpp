@@ -169,7 +169,13 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   measure(r);
   QuadrangulationOptions finer = options;
   while (r.deviationBound > limit && r.refinements < options.maxRefinements) {
-    finer.targetEdgeLength *= std::clamp(0.9 * std::sqrt(limit / r.deviationBound), 0.5, 0.9);
+    const double step = std::clamp(0.9 * std::sqrt(limit / r.deviationBound), 0.5, 0.9);
+    if (double(r.mesh.numQuads()) / (step * step) > double(options.maxQuads)) {
+      r.refinementProblem = "a finer pass would give about " + std::to_string(long(r.mesh.numQuads() / (step * step))) +
+                            " quads, more than the limit of " + std::to_string(options.maxQuads);
+      break;
+    }
+    finer.targetEdgeLength *= step;
     const int refinements = r.refinements + 1;
     try {
       QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);

@@ -51,6 +51,9 @@ struct QuadrangulationOptions {
   /// not hold, quadrangulate throws std::runtime_error saying how far the mesh may be.
   double maxDeviation = 0.01;
   int maxRefinements = 4;
+  /// A refinement that would give more quads than this (estimated from the last pass) is not
+  /// made: the result keeps the last mesh and says why.
+  long maxQuads = 20000000;
 };
 
 /// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
