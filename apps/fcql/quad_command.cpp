@@ -98,7 +98,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   const auto metricsStart = std::chrono::steady_clock::now();
   const ClosestPointIndex surfaceIndex(fs.mesh);
   const QuadQuality quality =
-      measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex, options.maxDeviation * diagonal);
+      measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex, options.maxDeviation * fs.mesh.boundingBoxDiagonal());
   stats.set("quad.misaligned_pct", quality.misalignedPercent);
   stats.set("quad.mean_misalignment_deg", quality.meanMisalignmentDeg);
   stats.set("quad.misaligned_faces_pct", quality.misalignedFacesPercent);
