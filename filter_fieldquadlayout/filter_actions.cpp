@@ -83,6 +83,7 @@ void addQuadFigures(FilterOutcome& o, const QuadStepResult& q) {
   addInt(o, "quad_genus", q.quad.report.genus);
   addInt(o, "split_patches", q.quad.splitPatches);
   addInt(o, "time_limited_parts", q.quad.timeLimitedParts);
+  addInt(o, "inverted_quads", q.invertedQuads);
   addSeconds(o, "time_quadrangulation", q.seconds);
 }
 

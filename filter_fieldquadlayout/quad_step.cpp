@@ -35,11 +35,14 @@ QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult
   TriangleLayerData& l = r.layer;
   l.positions = q.positions;
   l.triangles.reserve(2 * q.quads.size());
+  const fcql::QuadJacobian jacobianOf(q);  // the CLI's measure (quad.min_scaled_jacobian)
   for (std::size_t i = 0; i < q.quads.size(); ++i) {
     const auto& quad = q.quads[i];
     const fcql::Vec3 &a = q.positions[quad[0]], &b = q.positions[quad[1]],
                      &c = q.positions[quad[2]], &d = q.positions[quad[3]];
-    const float jacobian = float(fcql::scaledJacobian(q, int(i)));  // the CLI's measure
+    const double exact = jacobianOf(int(i));
+    r.invertedQuads += exact <= 0;
+    const float jacobian = float(exact);
     r.scaledJacobian.push_back(jacobian);
     // Split along the shorter diagonal; it is edge 2 of the first triangle, edge 0 of the
     // second (edge i runs from corner i to corner i+1).
@@ -95,18 +98,19 @@ std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
                     " grid points fell outside their patch map (degenerate patches): their quads are distorted");
   if (!r.scaledJacobian.empty()) {
     double sum = 0, low = 1;
-    int inverted = 0;
     for (float j : r.scaledJacobian) {
       sum += j;
       low = std::min(low, double(j));
-      inverted += j <= 0;
     }
     char quality[128];
     std::snprintf(quality, sizeof quality,
                   "Scaled Jacobian (face quality): min %.3f, mean %.3f, %d quads <= 0", low,
-                  sum / r.scaledJacobian.size(), inverted);
+                  sum / r.scaledJacobian.size(), r.invertedQuads);
     lines.push_back(quality);
   }
+  if (r.invertedQuads > 0)
+    lines.push_back("Warning: " + std::to_string(r.invertedQuads) +
+                    " quads are folded or turned against the surface (scaled Jacobian <= 0) after smoothing and untangling");
   lines.push_back("Layer \"" + std::string(kQuadLayer) + "\": " +
                   std::to_string(r.layer.triangles.size()) +
                   " triangles, in pairs sharing a faux diagonal");

@@ -29,6 +29,7 @@ struct QuadStepResult {
   fcql::QuadrangulationResult quad;
   double targetEdgeLength = 0;
   std::vector<float> scaledJacobian;  ///< per quad
+  int invertedQuads = 0;              ///< quads whose scaled Jacobian is <= 0 (quad.inverted_quads)
   TriangleLayerData layer;
   double seconds = 0;
 };

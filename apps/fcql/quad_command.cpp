@@ -71,6 +71,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
     progress(quiet, "warning: the side-length time limit (--ilp-time-limit, a safety stop) cut " +
                         std::to_string(r.timeLimitedParts) + " parts short: these quads depend on the machine's speed");
   stats.set("quad.polygon_patches", r.polygonPatches);
+  stats.set("quad.dissolved_vertices", r.dissolvedVertices);
   stats.set("quad.outside_points", qs.mesh.outsidePoints);
   if (qs.mesh.outsidePoints > 0)
     progress(quiet, "warning: " + std::to_string(qs.mesh.outsidePoints) +
@@ -101,7 +102,8 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
 
   const auto metricsStart = std::chrono::steady_clock::now();
   const ClosestPointIndex surfaceIndex(fs.mesh);
-  const QuadQuality quality = measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex);
+  const QuadQuality quality =
+      measureQuadQuality(qs.mesh, fs.mesh, fs.field, surfaceIndex, options.maxDeviation * fs.mesh.boundingBoxDiagonal());
   stats.set("quad.misaligned_pct", quality.misalignedPercent);
   stats.set("quad.mean_misalignment_deg", quality.meanMisalignmentDeg);
   stats.set("quad.misaligned_faces_pct", quality.misalignedFacesPercent);
@@ -110,14 +112,20 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.inverted_quads", quality.invertedQuads);
   stats.set("quad.hausdorff", quality.hausdorff);
   stats.set("quad.hausdorff_rel", quality.hausdorffRelative);
+  stats.set("quad.hausdorff_bound_rel", quality.hausdorffBoundRelative);
   stats.set("time_s.metrics", std::chrono::duration<double>(std::chrono::steady_clock::now() - metricsStart).count());
   char line[300];
   std::snprintf(line, sizeof line,
                 "quality: %.2f%% quads misaligned > pi/16 (mean %.2f deg; %.2f%% of the faces as the paper counts "
-                "them), scaled Jacobian min %.3f mean %.3f, Hausdorff %.3g%% of the diagonal",
+                "them), scaled Jacobian min %.3f mean %.3f, Hausdorff %.3g%% of the diagonal (at most %.3g%%)",
                 quality.misalignedPercent, quality.meanMisalignmentDeg, quality.misalignedFacesPercent,
-                quality.minScaledJacobian, quality.meanScaledJacobian, 100 * quality.hausdorffRelative);
+                quality.minScaledJacobian, quality.meanScaledJacobian, 100 * quality.hausdorffRelative,
+                100 * quality.hausdorffBoundRelative);
   progress(quiet, line);
+  if (quality.invertedQuads > 0)
+    progress(quiet, "warning: " + std::to_string(quality.invertedQuads) +
+                        " quads are folded or turned against the surface (scaled Jacobian <= 0) after smoothing and "
+                        "untangling (quad.inverted_quads)");
   return qs;
 }
 

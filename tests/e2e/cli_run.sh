@@ -49,6 +49,14 @@ else
   fail "fcql run --example rounded_box exited non-zero"
 fi
 
+# ---- --max-deviation that cannot be met: exit 1, a clear error, nothing written ---------------------
+if "$fcql" run --example rounded_box --scale 0.3 --max-deviation 0.00001 --out "$tmp/unmet" 2>"$tmp/unmet.err"; then
+  fail "--max-deviation 0.00001 at --scale 0.3 exited 0"
+else
+  grep -q "above the bound of 0.001%" "$tmp/unmet.err" || fail "unmet bound: no clear error ($(tail -1 "$tmp/unmet.err"))"
+  [ ! -e "$tmp/unmet" ] || fail "unmet bound: $tmp/unmet was written"
+fi
+
 # ---- --max-deviation: quads far coarser than the rounded edges are refined, unless disabled --------
 if "$fcql" run --example rounded_box --scale 0.3 --out "$tmp/refined" --quiet &&
    "$fcql" run --example rounded_box --scale 0.3 --max-deviation 0 --out "$tmp/unrefined" --quiet; then

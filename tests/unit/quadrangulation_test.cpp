@@ -586,6 +586,72 @@ TEST(Quadrangulation, SmoothingUntanglesAFoldedQuad) {
   for (const Vec3& p : grid.positions) EXPECT_NEAR(p.z(), 0, 1e-12);
 }
 
+TEST(Quadrangulation, ASmoothingStepThatWouldFoldAQuadIsNotTaken) {
+  // A 2×2 grid on the plane z = 0 whose only free vertex is the centre (the others are on the
+  // border). Its star is not convex: the average of its four neighbours, where one full step
+  // (step 1) takes it, folds the second quad. The step is refused and no quad folds.
+  QuadMesh grid;
+  grid.positions = {Vec3(0.5, -0.5, 0), Vec3(1, 0, 0),  Vec3(1.5, -1.5, 0), Vec3(0, 0.5, 0), Vec3(1, 1, 0),
+                    Vec3(1.5, 1, 0),    Vec3(-1, 2, 0), Vec3(-0.5, 2.5, 0), Vec3(1.5, 2, 0)};
+  grid.quads = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}, {4, 5, 8, 7}};
+  const Vec3 centre = grid.positions[4];
+  const Vec3 average = (grid.positions[1] + grid.positions[3] + grid.positions[5] + grid.positions[7]) / 4;
+  for (int q = 0; q < grid.numQuads(); ++q) ASSERT_GT(QuadJacobian(grid)(q), 0.3) << "quad " << q;
+  grid.positions[4] = average;
+  ASSERT_LE(QuadJacobian(grid)(1), 0) << "the unguarded step must fold a quad for this test to mean anything";
+  grid.positions[4] = centre;
+  const std::vector<Vec3> plane = {Vec3(-3, -3, 0), Vec3(4, -3, 0), Vec3(4, 4, 0), Vec3(-3, 4, 0)};
+  const std::vector<std::array<int, 3>> triangles = {{0, 1, 2}, {0, 2, 3}};
+  SmoothingOptions options;
+  options.iterations = 3;
+  options.step = 1;
+  const SmoothingReport report = smoothQuadMesh(grid, plane, triangles, options);
+  EXPECT_EQ(report.fixedVertices, 8);
+  EXPECT_GT(report.revertedMoves, 0);
+  EXPECT_EQ(grid.positions[4], centre);
+  const QuadJacobian jacobian(grid);
+  for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(jacobian(q), 0.1) << "quad " << q;
+}
+
+TEST(Quadrangulation, AnInnerVertexInTwoQuadsIsDissolved) {
+  // Two quads (v, a, x, b) and (v, b, y, a) around v = (0, 0): whatever v does, one of them is
+  // folded on the plane. They become the diamond (a, x, b, y); a grid keeps all its vertices.
+  QuadMesh pair;
+  pair.positions = {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0)};
+  pair.quads = {{0, 1, 2, 3}, {0, 3, 4, 1}};
+  pair.quadPatch = {7, 8};
+  EXPECT_EQ(dissolveTwoValentVertices(pair), 1);
+  ASSERT_EQ(pair.numQuads(), 1);
+  ASSERT_EQ(pair.numVertices(), 4);
+  EXPECT_EQ(pair.quadPatch, std::vector<int>{7});
+  const std::array<Vec3, 4> expected = {Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0)};
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(pair.positions[pair.quads[0][i]], expected[i]) << "corner " << i;
+  EXPECT_GT(scaledJacobian(pair, 0), 0.99);
+  QuadMesh grid;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 2; ++i) grid.positions.push_back(Vec3(i, j, 0));
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) grid.quads.push_back({3 * j + i, 3 * j + i + 1, 3 * (j + 1) + i + 1, 3 * (j + 1) + i});
+  EXPECT_EQ(dissolveTwoValentVertices(grid), 0);
+  EXPECT_EQ(grid.numQuads(), 4);
+  EXPECT_EQ(grid.numVertices(), 9);
+}
+
+TEST(Quadrangulation, AQuadTurnedAgainstTheSurfaceCountsAsFolded) {
+  // A 3×3 grid on z = 0 whose centre quad is turned over: its four corners mirrored across
+  // x = 1.5 and lifted, so it faces −z while agreeing with its own normal at every corner.
+  // Against its own normal alone it looks perfect; against the surface normal it is folded.
+  QuadMesh grid;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i) grid.positions.push_back(Vec3(i, j, 0));
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) grid.quads.push_back({4 * j + i, 4 * j + i + 1, 4 * (j + 1) + i + 1, 4 * (j + 1) + i});
+  for (int v : {5, 6, 9, 10}) grid.positions[v] = Vec3(3 - grid.positions[v].x(), grid.positions[v].y(), 0.01);
+  EXPECT_GT(scaledJacobian(grid, 4), 0.9);
+  EXPECT_LE(QuadJacobian(grid)(4), 0);
+  EXPECT_EQ(QuadJacobian(grid, false)(4), scaledJacobian(grid, 4));
+}
+
 TEST(Quadrangulation, SmoothingIsUndoneAroundPointsFarFromTheSurface) {
   // A 9×9 grid of unit quads; "smoothing" moved every vertex by (0.2, 0.1). Around a far point
   // at vertex (4, 4) with radius 2: vertices within 1 go back all the way, those between 1
@@ -636,6 +702,64 @@ TEST(Quadrangulation, FandiskNeedsNoFinerPassOnceSmoothingSparesItsTips) {
   EXPECT_EQ(r.refinements, 0);
   EXPECT_LE(r.deviation, r.deviationLimit);
   checkQuadMesh(*q, r, "fandisk");
+}
+
+TEST(Quadrangulation, ExitMeansTheDistanceBoundHoldsOnFandisk) {
+  // The stage returns a mesh only within maxDeviation (1% of the diagonal) of the surface.
+  // Checked here independently: both surfaces sampled on uniform barycentric grids 0.1% of the
+  // diagonal apart (inside every triangle and along every edge), each sample against the
+  // other surface. The measure the stage decides with must also bound this from above.
+  FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
+  auto q = layoutOf(loadMesh(fandisk));
+  const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.02);
+  const double diagonal = q->mesh.boundingBoxDiagonal();
+  const double limit = 0.01 * diagonal;
+  const double spacing = 0.001 * diagonal;
+  const ClosestPointIndex surface(q->mesh);
+  std::vector<std::array<int, 3>> quadTris;
+  for (const auto& f : r.mesh.quads) {  // shorter diagonal, as the mesh is read
+    if ((r.mesh.positions[f[2]] - r.mesh.positions[f[0]]).squaredNorm() <=
+        (r.mesh.positions[f[3]] - r.mesh.positions[f[1]]).squaredNorm())
+      quadTris.push_back({f[0], f[1], f[2]}), quadTris.push_back({f[0], f[2], f[3]});
+    else
+      quadTris.push_back({f[0], f[1], f[3]}), quadTris.push_back({f[1], f[2], f[3]});
+  }
+  const ClosestPointIndex quads(r.mesh.positions, quadTris);
+  auto farthest = [&](const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T, const ClosestPointIndex& other) {
+    double worst = 0;
+    for (const auto& t : T) {
+      const Vec3 &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
+      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      const int n = std::max(1, int(std::ceil(longest / spacing)));
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j)
+          worst = std::max(worst, other.closest(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)).distance);
+    }
+    return worst;
+  };
+  const double dense = std::max(farthest(r.mesh.positions, quadTris, surface),
+                                farthest(q->mesh.positions(), q->mesh.faces(), quads));
+  std::cout << "fandisk: dense two-sided distance " << 100 * dense / diagonal << "% of the diagonal, stage bound "
+            << 100 * r.deviationBound / diagonal << "%" << std::endl;
+  EXPECT_LE(dense, limit);
+  EXPECT_LE(r.deviationBound, r.deviationLimit);
+  EXPECT_GE(r.deviationBound, dense - 1e-9 * diagonal);
+}
+
+TEST(Quadrangulation, ABoundThatCannotBeMetIsAnError) {
+  // Quads of a third of the diagonal on a rounded box stray more than 1% from its rounded
+  // edges; without refinements the stage cannot meet the bound and says so instead of
+  // returning the mesh.
+  auto q = layoutOf(makeRoundedBox());
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.3 * q->mesh.boundingBoxDiagonal();
+  options.maxRefinements = 0;
+  try {
+    quadrangulate(q->patches, options);
+    ADD_FAILURE() << "a mesh farther than the bound was returned";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("above the bound of 1%"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Quadrangulation, SmoothingPutsVerticesOnSharpEdges) {

@@ -14,37 +14,86 @@
 //   σ/2 off each), against the face's own cross. Shear counts half as much as above.
 // - Scaled Jacobian of a quad: the minimum over its corners of (e1 × e2)·n / (|e1| |e2|), with
 //   e1, e2 the edges leaving the corner and n the unit normal of the quad (cross product of its
-//   diagonals): 1 for a rectangle, ≤ 0 for a folded or inverted corner.
-// - Hausdorff distance between the quad mesh (each quad as two triangles) and the input
-//   surface, both ways, sampled at vertices, edge midpoints and quad centres on the quad side
-//   and at the vertices and face centroids on the input side.
+//   diagonals): 1 for a rectangle, ≤ 0 for a folded or inverted corner. Each corner is also
+//   measured against the surface normal there (the mean of the unit normals of the quads around
+//   the corner's vertex): a quad turned over against its neighbours (a page folded back, whose
+//   corners all agree with its own normal) is negative there, and when a corner is, the lowest
+//   of those values is taken. So a quad is folded (≤ 0) when any of its four corners is, by
+//   either normal; a quad that is not keeps the figure against its own normal.
+// - Hausdorff distance between the quad mesh (each quad as two triangles, split along its
+//   shorter diagonal) and the input surface, both ways, sampled densely on both: every
+//   triangle's vertices, then its edges' midpoints, recursively cut into four, wherever the
+//   triangle could still hold a point farther than the threshold (the largest distance at its
+//   vertices plus its cover radius, as the distance to a surface grows no faster than one
+//   moves). So besides the largest distance found (a lower bound) the measure gives an upper
+//   bound on the true distance, and decides whether it is within a limit.
 #pragma once
 
 #include "field/cross_field.h"
 #include "metrics/closest_point_index.h"
 #include "quadrangulation/quad_mesh.h"
 
+#include <array>
 #include <vector>
 
 namespace fcql {
 
-/// Symmetric Hausdorff distance (see above) between `quads` and the surface that
-/// `surfaceIndex` indexes, whose sample points (vertices, face centroids) are `surfacePoints`.
-double hausdorffDistance(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
-                         const std::vector<Vec3>& surfacePoints);
-
-/// The Hausdorff distance (as above) and the points it measures, either way, that lie
-/// farther than `limit` from the other side: where the quads leave the surface or fail to
-/// cover it.
+/// The two-sided distance (see above) between `quads` and the surface `surfaceIndex` indexes.
+/// With limit > 0, triangles are cut until their bound is within max(limit, the largest
+/// distance found) or their cover radius is at most `resolution`; farPoints are the samples
+/// farther than limit and the worst point of each triangle left undecided (bound above the
+/// limit at the finest resolution). With limit = 0, the largest distance is sought to within
+/// `resolution`. Exact where it matters: bound ≤ limit guarantees that every point of either
+/// surface is within limit of the other.
 struct SurfaceDeviation {
-  double distance = 0;
+  double distance = 0;  ///< largest distance measured at a sample, either way (≤ the true one)
+  double bound = 0;     ///< upper bound on the true distance (≥ distance)
   std::vector<Vec3> farPoints;
 };
-SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex,
-                                  const std::vector<Vec3>& surfacePoints, double limit);
+SurfaceDeviation measureDeviation(const QuadMesh& quads, const ClosestPointIndex& surfaceIndex, double limit,
+                                  double resolution);
 
-/// Scaled Jacobian of quad q of `mesh` (see above).
+/// The triangles the distance is measured on: each quad split along its shorter diagonal.
+std::vector<std::array<int, 3>> quadTriangles(const QuadMesh& quads);
+
+/// Scaled Jacobian of quad q of `mesh` against its own normal only (see above).
 double scaledJacobian(const QuadMesh& mesh, int q);
+
+/// The scaled Jacobian of every quad against its own normal and the surface normal at each
+/// corner (see above). Moving a vertex changes the figure of the quads around it and of the
+/// quads around its neighbours (their corner normals): `dependents` lists them.
+class QuadJacobian {
+public:
+  /// surfaceNormals = false: against the quads' own normals only (as scaledJacobian).
+  explicit QuadJacobian(const QuadMesh& mesh, bool surfaceNormals = true);
+  /// Against the quads' own normals and, at every corner, a fixed normal per quad
+  /// (`referenceNormals[q]`, e.g. the input surface's there) instead of the corner's: a quad's
+  /// figure then depends on its own corners only.
+  QuadJacobian(const QuadMesh& mesh, std::vector<Vec3> referenceNormals);
+  /// Quad q's scaled Jacobian with the mesh's current positions.
+  double operator()(int q) const;
+  /// The figures of `quads` (out[i] for quads[i]), each corner normal computed once.
+  void values(const std::vector<int>& quads, std::vector<double>& out) const;
+  /// The figures of every quad.
+  void all(std::vector<double>& out) const;
+  /// Surface normal at vertex v (unit, zero if its quads have no area).
+  Vec3 vertexNormal(int v) const;
+  /// Quads whose figure depends on the position of vertex v, sorted.
+  void dependents(int v, std::vector<int>& out) const;
+  const std::vector<int>& quadsAround(int v) const { return quadsOf_[v]; }
+
+private:
+  const QuadMesh& mesh_;
+  template <class Normal>
+  double evaluate(int q, Normal&& normalAt) const;
+
+  std::vector<std::vector<int>> quadsOf_;
+  bool surfaceNormals_ = true;
+  std::vector<Vec3> referenceNormals_;  ///< per quad, if given
+  mutable std::vector<Vec3> normalCache_;  ///< per vertex, valid where stamp_ == epoch_
+  mutable std::vector<unsigned> stamp_;
+  mutable unsigned epoch_ = 0;
+};
 
 struct QuadQuality {
   double misalignedPercent = 0;     ///< % of quads misaligned by more than the threshold
@@ -53,12 +102,18 @@ struct QuadQuality {
   double minScaledJacobian = 0;
   double meanScaledJacobian = 0;
   int invertedQuads = 0;            ///< scaled Jacobian ≤ 0
-  double hausdorff = 0;             ///< symmetric, absolute
+  double hausdorff = 0;             ///< symmetric, absolute: the largest distance found
   double hausdorffRelative = 0;     ///< hausdorff / bounding-box diagonal of the input
+  double hausdorffBound = 0;        ///< upper bound on the true distance (measureDeviation)
+  double hausdorffBoundRelative = 0;
 };
 
-/// `surfaceIndex` indexes the faces of `surface` (ClosestPointIndex(surface)).
+/// `surfaceIndex` indexes the faces of `surface` (ClosestPointIndex(surface)). The Hausdorff
+/// distance is measured as measureDeviation does with `deviationLimit` (absolute; 0: the
+/// largest distance to within 2e-4 of the diagonal; else to within 2% of the limit, but no
+/// finer than that).
 QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
-                               const ClosestPointIndex& surfaceIndex, double thresholdRad = 3.14159265358979323846 / 16);
+                               const ClosestPointIndex& surfaceIndex, double deviationLimit = 0,
+                               double thresholdRad = 3.14159265358979323846 / 16);
 
 }  // namespace fcql

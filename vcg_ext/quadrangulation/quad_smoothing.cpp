@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -17,6 +18,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSnapShare = 0.35;
 constexpr double kMinScaledJacobian = 0.1;
+constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower
 
 /// Per triangle and local edge (i → i+1): 1 if the edge is sharp (dihedral above the threshold).
 std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
@@ -40,58 +42,176 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
   return sharp;
 }
 
-/// Per vertex, the quads that have it as a corner.
-std::vector<std::vector<int>> quadsAroundVertices(const QuadMesh& quads) {
-  std::vector<std::vector<int>> quadsOf(quads.numVertices());
-  for (int q = 0; q < quads.numQuads(); ++q)
-    for (int v : quads.quads[q]) quadsOf[v].push_back(q);
-  return quadsOf;
-}
-
 /// Vertices of quads still folded or nearly flat (scaled Jacobian ≤ kMinScaledJacobian) try a
-/// few positions and keep the one that most raises the worst scaled Jacobian of their quads:
-/// the parallelogram completion a + c − b of each of their quads (a, c its neighbours there,
-/// b the opposite corner), which makes that quad convex, and their neighbours' average, each
-/// put back on the surface. A dart at a very obtuse patch corner is the usual case: the
-/// Laplacian pulls its inner vertex towards the corner, the completion pushes it out.
+/// few positions and keep the one that most lowers the shortfall below that threshold of the
+/// quads that depend on them (theirs and their neighbours'), among the positions where none of
+/// those quads falls below its figure or the threshold, whichever is lower: the parallelogram completion a + c − b of each
+/// of their quads (a, c its neighbours there, b the opposite corner), which makes that quad
+/// convex, their neighbours' average and the centre of their quads, each also half-way from
+/// where the vertex is, put back on the surface. A dart at a very obtuse patch corner is the
+/// usual case: the Laplacian pulls its inner vertex towards the corner, the completion pushes it
+/// out. So no move folds a quad that was not folded, or worsens one that was.
 void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<char>& fixed,
-              const std::vector<std::vector<int>>& neighbours, SmoothingReport& report) {
-  const std::vector<std::vector<int>> quadsOf = quadsAroundVertices(quads);
-  auto worstAround = [&](int v) {
-    double worst = 1;
-    for (int q : quadsOf[v]) worst = std::min(worst, scaledJacobian(quads, q));
-    return worst;
+              const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian, SmoothingReport& report) {
+  std::vector<int> around;
+  std::vector<double> before;
+  std::vector<double> now;
+  // How bad a quad is: its shortfall below the threshold, ten times more below 0 (folded).
+  auto penalty = [](double j) { return std::max(0.0, kMinScaledJacobian - j) + 10 * std::max(0.0, -j); };
+  // The quads around at the vertex's current position: their summed penalty, or infinity when
+  // one that was not folded falls to kUntangleFloor or below its figure before, whichever is
+  // lower, or one that was folded gets worse. Quads may get a little worse than the threshold
+  // while their neighbours unfold, but none folds.
+  auto shortfall = [&] {
+    jacobian.values(around, now);
+    double sum = 0;
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      const double floor = before[i] > 0 ? std::min(before[i], kUntangleFloor) : before[i];
+      if (now[i] < floor) return std::numeric_limits<double>::infinity();
+      sum += penalty(now[i]);
+    }
+    return sum;
   };
   std::vector<Vec3> candidates;
-  for (int sweep = 0; sweep < 10; ++sweep) {
+  std::vector<int> bad, corners;
+  double lastTotal = 0;
+  for (int sweep = 0; sweep < 20; ++sweep) {
+    bad.clear();
+    jacobian.all(now);
+    double total = 0;
+    for (int q = 0; q < quads.numQuads(); ++q)
+      if (now[q] <= kMinScaledJacobian) bad.push_back(q), total += kMinScaledJacobian - now[q];
+    // Stop once a sweep gains less than 1% of the shortfall.
+    if (sweep > 0 && total > lastTotal * 0.99) break;
+    lastTotal = total;
+    if (bad.empty()) break;
+    // The corners of the bad quads first, then their neighbours (a fold can need room).
+    corners.clear();
+    for (int q : bad)
+      for (int v : quads.quads[q]) corners.push_back(v);
+    const std::size_t first = corners.size();
+    for (std::size_t i = 0; i < first; ++i)
+      for (int w : neighbours[corners[i]]) corners.push_back(w);
+    std::sort(corners.begin() + first, corners.end());
+    corners.erase(std::unique(corners.begin() + first, corners.end()), corners.end());
     bool changed = false;
-    for (int q = 0; q < quads.numQuads(); ++q) {
-      if (scaledJacobian(quads, q) > kMinScaledJacobian) continue;
-      for (int v : quads.quads[q]) {
-        if (fixed[v] || neighbours[v].empty()) continue;
-        const Vec3 original = quads.positions[v];
-        candidates.clear();
-        for (int r : quadsOf[v]) {
-          const auto& f = quads.quads[r];
-          const int i = int(std::find(f.begin(), f.end(), v) - f.begin());
-          candidates.push_back(quads.positions[f[(i + 1) % 4]] + quads.positions[f[(i + 3) % 4]] -
-                               quads.positions[f[(i + 2) % 4]]);
-        }
-        Vec3 average = Vec3::Zero();
-        for (int w : neighbours[v]) average += quads.positions[w];
-        candidates.push_back(average / double(neighbours[v].size()));
-        double best = worstAround(v);
-        Vec3 bestPosition = original;
-        for (const Vec3& c : candidates) {
-          quads.positions[v] = surface.closest(c).point;
-          const double worst = worstAround(v);
-          if (worst > best + 1e-9) best = worst, bestPosition = quads.positions[v];
-        }
-        quads.positions[v] = bestPosition;
-        if (bestPosition != original) changed = true, ++report.untangledMoves;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const int v = corners[i];
+      if (fixed[v] || neighbours[v].empty()) continue;
+      jacobian.dependents(v, around);
+      const Vec3 original = quads.positions[v];
+      jacobian.values(around, before);
+      double best = 0;
+      for (double j : before) best += penalty(j);
+      if (!(best > 0)) continue;
+      candidates.clear();
+      Vec3 centre = Vec3::Zero();
+      for (int r : jacobian.quadsAround(v)) {
+        const auto& f = quads.quads[r];
+        const int k = int(std::find(f.begin(), f.end(), v) - f.begin());
+        candidates.push_back(quads.positions[f[(k + 1) % 4]] + quads.positions[f[(k + 3) % 4]] -
+                             quads.positions[f[(k + 2) % 4]]);
+        for (int w : f) centre += quads.positions[w];
       }
+      candidates.push_back(centre / (4.0 * double(jacobian.quadsAround(v).size())));
+      Vec3 average = Vec3::Zero();
+      for (int w : neighbours[v]) average += quads.positions[w];
+      candidates.push_back(average / double(neighbours[v].size()));
+      const std::size_t whole = candidates.size();
+      for (std::size_t c = 0; c < whole; ++c) candidates.push_back((candidates[c] + original) / 2);
+      Vec3 bestPosition = original;
+      for (const Vec3& c : candidates) {
+        quads.positions[v] = surface.closest(c).point;
+        const double s = shortfall();
+        if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
+      }
+      // Then a pattern search in the tangent plane from the best position: 8 directions, the
+      // step halved from half the mean edge whenever none of them helps.
+      double edge = 0;
+      for (int w : neighbours[v]) edge += (quads.positions[w] - original).norm();
+      edge /= double(neighbours[v].size());
+      for (double r = 0.5 * edge; r > 0.02 * edge;) {
+        quads.positions[v] = bestPosition;
+        const Vec3 n = jacobian.vertexNormal(v);
+        if (n.isZero() || !(best > 0)) break;
+        const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+        const Vec3 from = bestPosition;
+        for (int k = 0; k < 8; ++k) {
+          const double a = k * kPi / 4;
+          quads.positions[v] = surface.closest(from + (t1 * std::cos(a) + t2 * std::sin(a)) * r).point;
+          const double s = shortfall();
+          if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
+        }
+        if (bestPosition == from) r /= 2;
+      }
+      quads.positions[v] = bestPosition;
+      if (bestPosition != original) changed = true, ++report.untangledMoves;
     }
     if (!changed) break;
+  }
+  // Folds left in clusters (a patch's grid folded over itself) need several vertices to move
+  // together: the free vertices within a few rings of them are smoothed as a region (plain
+  // averaging with reprojection, the region's rim fixed, which unfolds a disk like Tutte's
+  // embedding), and the result is kept when it leaves fewer folded quads and folds none that
+  // was not, else undone. Growing regions: 2, 4 and 8 rings.
+  for (int rings : {2, 4, 8}) {
+    std::vector<char> inRegion(quads.positions.size(), 0);
+    std::vector<int> frontier;
+    jacobian.all(now);
+    for (int q = 0; q < quads.numQuads(); ++q)
+      if (now[q] <= 0)
+        for (int v : quads.quads[q])
+          if (!inRegion[v]) inRegion[v] = 1, frontier.push_back(v);
+    if (frontier.empty()) break;
+    for (int ring = 0; ring < rings; ++ring) {
+      std::vector<int> grown;
+      for (int v : frontier)
+        for (int w : neighbours[v])
+          if (!inRegion[w]) inRegion[w] = 1, grown.push_back(w);
+      frontier.swap(grown);
+    }
+    // Connected parts of the region's free vertices, each tried on its own.
+    std::vector<int> part(quads.positions.size(), -1);
+    for (int seed = 0; seed < int(quads.positions.size()); ++seed) {
+      if (!inRegion[seed] || fixed[seed] || part[seed] >= 0 || neighbours[seed].empty()) continue;
+      std::vector<int> members{seed};
+      part[seed] = seed;
+      for (std::size_t i = 0; i < members.size(); ++i)
+        for (int w : neighbours[members[i]])
+          if (inRegion[w] && !fixed[w] && part[w] < 0) part[w] = seed, members.push_back(w);
+      std::vector<int> affected;
+      for (int v : members) {
+        jacobian.dependents(v, around);
+        affected.insert(affected.end(), around.begin(), around.end());
+      }
+      std::sort(affected.begin(), affected.end());
+      affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+      jacobian.values(affected, before);
+      int foldedBefore = 0;
+      for (double j : before) foldedBefore += j <= 0;
+      if (foldedBefore == 0) continue;
+      std::vector<Vec3> saved;
+      for (int v : members) saved.push_back(quads.positions[v]);
+      for (int it = 0; it < 30; ++it)
+        for (int v : members) {
+          Vec3 average = Vec3::Zero();
+          for (int w : neighbours[v]) average += quads.positions[w];
+          quads.positions[v] = surface.closest(average / double(neighbours[v].size())).point;
+        }
+      int foldedAfter = 0;
+      bool newFold = false;
+      jacobian.values(affected, now);
+      for (std::size_t i = 0; i < affected.size(); ++i) {
+        const double j = now[i];
+        foldedAfter += j <= 0;
+        newFold = newFold || (j <= 0 && before[i] > 0);
+      }
+      if (foldedAfter < foldedBefore && !newFold) {
+        report.untangledMoves += int(members.size());
+      } else {
+        for (std::size_t i = 0; i < members.size(); ++i) quads.positions[members[i]] = saved[i];
+      }
+    }
   }
 }
 
@@ -154,11 +274,18 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   }
   for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
 
+  // A round moves every free vertex at once; then every quad that the round took from above
+  // kMinScaledJacobian to it or below (folded, turned against the surface or nearly flat, at
+  // any of its four corners) has the moves undone that it depends on (its corners' and their
+  // neighbours': the surface normal at a corner comes from the quads around it), until none is
+  // left. So no step folds or flattens a quad; quads already bad are left to the untangling.
+  const QuadJacobian jacobian(quads);
   std::vector<Vec3> next(quads.positions);
+  std::vector<double> before(quads.numQuads()), after;
+  std::vector<int> dependent;
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
-    std::vector<double> before(quads.numQuads());
-    for (int q = 0; q < quads.numQuads(); ++q) before[q] = scaledJacobian(quads, q);
+    jacobian.all(before);
     for (int v = 0; v < nv; ++v) {
       next[v] = previous[v];
       if (fixed[v] || neighbours[v].empty()) continue;
@@ -184,21 +311,52 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
       }
     }
     quads.positions = next;
-    // Undo the moves around any quad that this round folded or flattened (repeat: an undo can fold another).
-    for (bool again = true; again;) {
-      again = false;
-      for (int q = 0; q < quads.numQuads(); ++q) {
-        if (!(before[q] > kMinScaledJacobian) || scaledJacobian(quads, q) > kMinScaledJacobian) continue;
+    // The quads to check: all at first, then those depending on a vertex just put back.
+    std::vector<int> check, reverted;
+    jacobian.all(after);
+    for (int q = 0; q < quads.numQuads(); ++q)
+      if (before[q] > kMinScaledJacobian && after[q] <= kMinScaledJacobian) check.push_back(q);
+    while (!check.empty()) {
+      reverted.clear();
+      for (int q : check) {
+        // Its own corners first; if they had not moved, the neighbours that turned its normals.
+        bool own = false;
         for (int v : quads.quads[q])
-          if (quads.positions[v] != previous[v]) {
-            quads.positions[v] = previous[v];
-            ++report.revertedMoves;
-            again = true;
-          }
+          if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v), own = true;
+        if (own) continue;
+        for (int c : quads.quads[q])
+          for (int r : jacobian.quadsAround(c))
+            for (int v : quads.quads[r])
+              if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v);
       }
+      report.revertedMoves += int(reverted.size());
+      std::vector<int> candidatesToCheck;
+      for (int v : reverted) {
+        jacobian.dependents(v, dependent);
+        candidatesToCheck.insert(candidatesToCheck.end(), dependent.begin(), dependent.end());
+      }
+      std::sort(candidatesToCheck.begin(), candidatesToCheck.end());
+      candidatesToCheck.erase(std::unique(candidatesToCheck.begin(), candidatesToCheck.end()), candidatesToCheck.end());
+      jacobian.values(candidatesToCheck, after);
+      check.clear();
+      for (std::size_t i = 0; i < candidatesToCheck.size(); ++i)
+        if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
     }
   }
-  untangle(quads, index, fixed, neighbours, report);
+  {
+    // Against the input surface's normal at each quad (the mean of the normals of the surface
+    // triangles its corners lie on), which folded quads do not disturb.
+    std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
+    std::vector<Vec3> at(nv, Vec3::Zero());
+    for (int v = 0; v < nv; ++v)
+      if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
+    for (int q = 0; q < quads.numQuads(); ++q) {
+      for (int v : quads.quads[q]) reference[q] += at[v];
+      if (reference[q].norm() > 0) reference[q].normalize();
+    }
+    untangle(quads, index, fixed, neighbours, QuadJacobian(quads, std::move(reference)), report);
+  }
+  untangle(quads, index, fixed, neighbours, jacobian, report);
   return report;
 }
 
@@ -214,14 +372,14 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   };
   std::map<std::array<long long, 3>, std::vector<int>> cells;
   for (int i = 0; i < int(far.size()); ++i) cells[cellOf(far[i])].push_back(i);
-  const std::vector<std::vector<int>> quadsOf = quadsAroundVertices(quads);
-  std::vector<double> before(quads.numQuads());
-  for (int q = 0; q < quads.numQuads(); ++q) before[q] = scaledJacobian(quads, q);
-  // Vertex by vertex in index order: a return that folds or flattens one of the vertex's
-  // quads (given where the others are by then) is not made.
+  const QuadJacobian jacobian(quads);
+  std::vector<int> around;
+  std::vector<double> before, after;
+  // Vertex by vertex in index order: a return that folds or flattens a quad that depends on the
+  // vertex (given where the others are by then) is not made.
   int count = 0;
   for (int v = 0; v < nv; ++v) {
-    if (quadsOf[v].empty() || quads.positions[v] == sampled[v]) continue;
+    if (jacobian.quadsAround(v).empty() || quads.positions[v] == sampled[v]) continue;
     const Vec3 smoothed = quads.positions[v];
     const auto c = cellOf(smoothed);
     double nearest = std::numeric_limits<double>::infinity();
@@ -234,9 +392,13 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
         }
     if (!(nearest < radius)) continue;
     const double share = std::min(1.0, 2.0 * (1.0 - nearest / radius));
+    jacobian.dependents(v, around);
+    jacobian.values(around, before);
     quads.positions[v] = smoothed + (sampled[v] - smoothed) * share;
     bool folds = false;
-    for (int q : quadsOf[v]) folds = folds || (before[q] > kMinScaledJacobian && scaledJacobian(quads, q) <= kMinScaledJacobian);
+    jacobian.values(around, after);
+    for (std::size_t i = 0; i < around.size() && !folds; ++i)
+      folds = before[i] > kMinScaledJacobian && after[i] <= kMinScaledJacobian;
     if (folds) quads.positions[v] = smoothed;
     else ++count;
   }

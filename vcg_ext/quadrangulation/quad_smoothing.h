@@ -6,11 +6,20 @@
 // nearest feature line (sharp edges, dihedral angle above `sharpAngleDeg`) when that is closer
 // than about a third of the vertex's mean edge length, so that quads follow creases instead of
 // cutting across them. Vertices on the border of the quad mesh and vertices lying on a sharp
-// edge stay where they are. A round is undone for the vertices of any quad it would fold or
-// nearly flatten (scaled Jacobian dropping below kMinScaledJacobian, unless it was already).
-// Last, the vertices of quads still folded or nearly flat are untangled: each tries the
-// parallelogram completions of its quads and its neighbours' average (on the surface) and
-// keeps the position that most raises the worst scaled Jacobian around it.
+// edge stay where they are. No step folds a quad: after each round, every quad the round took
+// from above kMinScaledJacobian (0.1) to it or below, at any of its four corners, against its
+// own normal or the surface normal there (QuadJacobian, metrics/quad_quality.h), has the moves
+// it depends on undone. Last, the quads still folded or nearly flat are untangled, first
+// against the input surface's normal at each quad (which folded quads do not disturb: the
+// mean normal of the surface triangles its corners lie on), then against the surface normal
+// at each corner as it is measured: each vertex around them tries
+// the parallelogram completions of its quads, its neighbours' average and its quads' centre (on
+// the surface), then a pattern search in the tangent plane, and keeps the position that most
+// lowers the quads' shortfall below the threshold (folds weighing ten times more) without
+// folding any quad, worsening a folded one or taking a good one below 0.02; folds left in
+// clusters are smoothed as regions of 2, 4 and 8 rings, kept
+// only when fewer quads are folded and none newly. What cannot be unfolded stays (counted by
+// the caller: quad.inverted_quads).
 #pragma once
 
 #include "quadrangulation/quad_mesh.h"
@@ -44,8 +53,8 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
 /// whose surface is then no longer covered. Every vertex within `radius` of a point of `far`
 /// goes back towards its `sampled` position: all the way within radius / 2, by a share
 /// falling linearly to 0 at `radius`. Vertices go back one by one in index order; one whose
-/// return would fold or nearly flatten one of its quads, given where the others are by then
-/// (scaled Jacobian at most 0.1 where it was above), keeps its smoothed position. Returns how
+/// return would fold or nearly flatten a quad that depends on it, given where the others are by
+/// then (QuadJacobian at most 0.1 where it was above), keeps its smoothed position. Returns how
 /// many vertices moved. Throws std::invalid_argument unless `sampled` has one position per vertex.
 int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, const std::vector<Vec3>& far,
                             double radius);

@@ -6,10 +6,60 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace fcql {
+
+int dissolveTwoValentVertices(QuadMesh& mesh) {
+  int dissolved = 0;
+  for (bool again = true; again;) {
+    again = false;
+    std::vector<std::vector<int>> quadsOf(mesh.positions.size());
+    for (int q = 0; q < mesh.numQuads(); ++q)
+      for (int v : mesh.quads[q]) quadsOf[v].push_back(q);
+    std::vector<char> goneQuad(mesh.quads.size(), 0), goneVertex(mesh.positions.size(), 0), touched(mesh.quads.size(), 0);
+    for (int v = 0; v < mesh.numVertices(); ++v) {
+      if (quadsOf[v].size() != 2) continue;
+      const int qa = quadsOf[v][0], qb = quadsOf[v][1];
+      if (touched[qa] || touched[qb]) continue;
+      auto rotated = [&](int q) {
+        std::array<int, 4> f = mesh.quads[q];
+        while (f[0] != v) std::rotate(f.begin(), f.begin() + 1, f.end());
+        return f;
+      };
+      const std::array<int, 4> A = rotated(qa), B = rotated(qb);  // (v, a, x, b), (v, b, y, a)
+      if (B[1] != A[3] || B[3] != A[1] || A[2] == B[2]) continue;
+      mesh.quads[qa] = {A[1], A[2], A[3], B[2]};
+      goneQuad[qb] = 1;
+      goneVertex[v] = 1;
+      touched[qa] = touched[qb] = 1;
+      ++dissolved;
+      again = true;
+    }
+    if (!again) break;
+    std::vector<int> index(mesh.positions.size(), -1);
+    std::vector<Vec3> positions;
+    for (int v = 0; v < mesh.numVertices(); ++v)
+      if (!goneVertex[v]) index[v] = int(positions.size()), positions.push_back(mesh.positions[v]);
+    std::vector<std::array<int, 4>> quads;
+    std::vector<int> patches;
+    for (int q = 0; q < mesh.numQuads(); ++q) {
+      if (goneQuad[q]) continue;
+      std::array<int, 4> f = mesh.quads[q];
+      for (int& v : f) v = index[v];
+      quads.push_back(f);
+      if (q < int(mesh.quadPatch.size())) patches.push_back(mesh.quadPatch[q]);
+    }
+    mesh.positions = std::move(positions);
+    mesh.quads = std::move(quads);
+    mesh.quadPatch = std::move(patches);
+  }
+  return dissolved;
+}
+
 namespace {
+
 
 /// One pass of the stage at one target edge length; `surface` is the topology of the layout's
 /// triangles, which the quad mesh must have.
@@ -62,6 +112,7 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     r.lengths = solveLengths(r.graph);
   }
   r.mesh = samplePatches(layout, r.graph, r.lengths);
+  r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
   r.sampledPositions = r.mesh.positions;
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
   r.report = checkQuadMesh(r.mesh);
@@ -93,48 +144,50 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   const SurfaceTopology topology = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
   QuadrangulationResult r = quadrangulateOnce(layout, options, topology);
   if (options.maxDeviation <= 0) return r;
-  // The distance to the surface, measured on the layout's triangles (the input, cut): where it
-  // exceeds the bound, sample again more finely. A chord of a curve deviates from it by about
-  // h²/(8R) for edges of length h, hence the square root in the step.
-  // Samples: the vertices the triangles use (a mesh file may hold unused ones) and centroids.
+  // The distance to the surface, measured on the layout's triangles (the input, cut), both
+  // ways and densely (measureDeviation: an upper bound on the true distance decides): where it
+  // may exceed the bound, sample again more finely. A chord of a curve deviates from it by
+  // about h²/(8R) for edges of length h, hence the square root in the step.
   std::vector<char> used(layout.positions.size(), 0);
   for (const auto& t : layout.triangles)
     for (int v : t) used[v] = 1;
-  std::vector<Vec3> samples;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  bool any = false;
   for (std::size_t v = 0; v < used.size(); ++v)
-    if (used[v]) samples.push_back(layout.positions[v]);
-  if (samples.empty() || r.mesh.numQuads() == 0) return r;  // nothing to measure
-  Vec3 lo = samples.front(), hi = lo;
-  for (const Vec3& p : samples) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    if (used[v]) lo = lo.cwiseMin(layout.positions[v]), hi = hi.cwiseMax(layout.positions[v]), any = true;
+  if (!any || r.mesh.numQuads() == 0) return r;  // nothing to measure
   const double limit = options.maxDeviation * (hi - lo).norm();
+  // Triangles are cut down to 2% of the limit, but no finer than 2e-4 of the diagonal (a
+  // tiny limit would cut without end; what stays undecided then counts as too far).
+  const double resolution = std::max(0.02 * limit, 2e-4 * (hi - lo).norm());
   const ClosestPointIndex surface(layout.positions, layout.triangles);
-  for (const auto& t : layout.triangles)
-    samples.push_back((layout.positions[t[0]] + layout.positions[t[1]] + layout.positions[t[2]]) / 3);
   // Smoothing may have slid vertices off a sharp tip, which the sampled mesh covered: where
   // the quads stray too far, undo it around those points (a few rounds, while it helps)
   // before sampling finer.
   // Each measurement also gives the far points the next round starts from.
   auto measure = [&](QuadrangulationResult& q) {
-    SurfaceDeviation d = measureDeviation(q.mesh, surface, samples, limit);
+    SurfaceDeviation d = measureDeviation(q.mesh, surface, limit, resolution);
     q.deviation = d.distance;
-    for (int round = 0; round < 3 && q.deviation > limit; ++round) {
+    q.deviationBound = d.bound;
+    for (int round = 0; round < 3 && q.deviationBound > limit; ++round) {
       const std::vector<Vec3> smoothed = q.mesh.positions;
       const int restored = restoreSampledPositions(q.mesh, q.sampledPositions, d.farPoints, 2 * q.targetEdgeLength);
       if (restored == 0) break;
-      SurfaceDeviation after = measureDeviation(q.mesh, surface, samples, limit);
-      if (!(after.distance < q.deviation)) {
+      SurfaceDeviation after = measureDeviation(q.mesh, surface, limit, resolution);
+      if (!(after.bound < q.deviationBound)) {
         q.mesh.positions = smoothed;
         break;
       }
       q.restoredVertices += restored;
       q.deviation = after.distance;
+      q.deviationBound = after.bound;
       d = std::move(after);
     }
   };
   measure(r);
   QuadrangulationOptions finer = options;
-  while (r.deviation > limit && r.refinements < options.maxRefinements) {
-    const double step = std::clamp(0.9 * std::sqrt(limit / r.deviation), 0.5, 0.9);
+  while (r.deviationBound > limit && r.refinements < options.maxRefinements) {
+    const double step = std::clamp(0.9 * std::sqrt(limit / r.deviationBound), 0.5, 0.9);
     if (double(r.mesh.numQuads()) / (step * step) > double(options.maxQuads)) {
       r.refinementProblem = "a finer pass would give about " + std::to_string(long(r.mesh.numQuads() / (step * step))) +
                             " quads, more than the limit of " + std::to_string(options.maxQuads);
@@ -146,11 +199,11 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);
       next.refinements = refinements;
       measure(next);
-      if (!(next.deviation < r.deviation)) {
+      if (!(next.deviationBound < r.deviationBound)) {
         // Smaller quads that get no closer (stretched or distorted patches): keep the closer mesh.
         char line[160];
         std::snprintf(line, sizeof line, "target edge %g: the mesh got no closer (%.3g%% of the diagonal)",
-                      finer.targetEdgeLength, 100 * options.maxDeviation * next.deviation / limit);
+                      finer.targetEdgeLength, 100 * options.maxDeviation * next.deviationBound / limit);
         r.refinementProblem = line;
         break;
       }
@@ -161,6 +214,19 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       r.refinementProblem = "target edge " + std::to_string(finer.targetEdgeLength) + ": " + e.what();
       break;
     }
+  }
+  r.deviationLimit = limit;
+  if (r.deviationBound > limit) {
+    // Exit 0 means the bound holds: a mesh that may be farther is not returned.
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "the quad mesh may be up to %.3g%% of the diagonal from the surface (at least %.3g%% measured), "
+                  "above the bound of %g%% (--max-deviation), after %d refinement(s) down to a target edge of %g%s%s; "
+                  "give a larger bound, smaller quads (--scale) or 0 to disable the check",
+                  100 * options.maxDeviation * r.deviationBound / limit, 100 * options.maxDeviation * r.deviation / limit,
+                  100 * options.maxDeviation, r.refinements, r.targetEdgeLength,
+                  r.refinementProblem.empty() ? "" : "; the next finer pass failed: ", r.refinementProblem.c_str());
+    throw std::runtime_error(line);
   }
   r.deviationLimit = limit;
   return r;
@@ -180,10 +246,10 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
   const double diagonal = r.deviationLimit / options.maxDeviation;
   if (r.refinements > 0) {
     std::snprintf(line, sizeof line,
-                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation %.3g%%%s",
+                  "refined %d time(s) to stay within %g%% of the diagonal: target quad edge %g -> %g, deviation at most %.3g%%%s",
                   r.refinements, 100 * options.maxDeviation, options.targetEdgeLength, r.targetEdgeLength,
-                  diagonal > 0 ? 100 * r.deviation / diagonal : 0.0,
-                  r.deviation <= r.deviationLimit ? ""
+                  diagonal > 0 ? 100 * r.deviationBound / diagonal : 0.0,
+                  r.deviationBound <= r.deviationLimit ? ""
                   : r.refinementProblem.empty()   ? " (still above: refinements exhausted)"
                                                   : " (still above: the next finer pass failed, see below)");
     notes.push_back(line);

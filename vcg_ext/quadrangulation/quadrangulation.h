@@ -28,6 +28,8 @@ struct QuadrangulationResult {
   /// always makes the counts agree.
   bool splitEverything = false;
   int polygonPatches = 0;  ///< layout patches with 3, 5 or more corners, split into quads first
+  /// Inner vertices in only two quads, which were merged into one (dissolveTwoValentVertices).
+  int dissolvedVertices = 0;
   SmoothingReport smoothing;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
@@ -35,7 +37,8 @@ struct QuadrangulationResult {
   int restoredVertices = 0;
   double targetEdgeLength = 0;  ///< the target edge length the mesh was sampled with
   int refinements = 0;          ///< times the target was lowered to meet maxDeviation
-  double deviation = 0;         ///< Hausdorff distance to the surface, absolute (0 if not measured)
+  double deviation = 0;         ///< Hausdorff distance to the surface found, absolute (0 if not measured)
+  double deviationBound = 0;    ///< upper bound on it (measureDeviation), ≤ deviationLimit when returned
   double deviationLimit = 0;    ///< maxDeviation in mesh units (0 if not asked for)
   std::string refinementProblem;  ///< why a finer pass failed (the mesh is then the last good one)
 };
@@ -48,9 +51,10 @@ struct QuadrangulationOptions {
   int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
   SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions
   /// Largest Hausdorff distance to the surface allowed, relative to the bounding-box diagonal
-  /// (0: no check). Where the mesh deviates more (curved parts finer than the target edge),
-  /// the stage runs again with a smaller target edge length, up to maxRefinements times;
-  /// the result says how often and how close it came.
+  /// (0: no check). Where the mesh may deviate more (measureDeviation's upper bound: curved
+  /// parts finer than the target edge), the stage runs again with a smaller target edge
+  /// length, up to maxRefinements times; the result says how often. If the bound still does
+  /// not hold, quadrangulate throws std::runtime_error saying how far the mesh may be.
   double maxDeviation = 0.01;
   int maxRefinements = 4;
   /// A refinement that would give more quads than this (estimated from the last pass) is not
@@ -60,9 +64,16 @@ struct QuadrangulationOptions {
 
 /// Throws std::invalid_argument for bad options, std::runtime_error (with the reason) if a
 /// patch is not a disk with at least 3 corners or zero chains remain after `maxSplitRounds`
-/// rounds, or if the quad mesh comes out non-manifold (never returned as if valid). Disks
+/// rounds, if the quad mesh comes out non-manifold (never returned as if valid) or if it may be
+/// farther than maxDeviation from the surface after the refinements. Disks
 /// with 3, 5 or more corners are cut into quads as n-gons (zero_chains.h).
 QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options);
+
+/// An inner vertex in only two quads, (v, a, x, b) and (v, b, y, a), makes them share two
+/// edges: their corners at v add up to a full turn, so on a flat part one of them is folded
+/// whatever the smoothing does. The two quads become one, (a, x, b, y), and v goes (repeated
+/// while any is left; vertices and quads are renumbered, quadPatch kept). Returns how many went.
+int dissolveTwoValentVertices(QuadMesh& mesh);
 
 /// Log lines about the distance check of a result made with `options`: how often and how far
 /// the target was lowered, and why a finer pass failed (none if nothing happened).
