@@ -292,6 +292,17 @@ void QuadJacobian::dependents(int v, std::vector<int>& out) const {
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
+void QuadJacobian::dependents(const std::vector<int>& vertices, std::vector<int>& out) const {
+  out.clear();
+  std::vector<int> one;
+  for (int v : vertices) {
+    dependents(v, one);
+    out.insert(out.end(), one.begin(), one.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 double scaledJacobian(const QuadMesh& mesh, int q) {
   const auto& f = mesh.quads[q];
   const auto& P = mesh.positions;

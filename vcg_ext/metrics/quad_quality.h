@@ -80,6 +80,8 @@ public:
   Vec3 vertexNormal(int v) const;
   /// Quads whose figure depends on the position of vertex v, sorted.
   void dependents(int v, std::vector<int>& out) const;
+  /// Quads whose figure depends on the position of any of `vertices`, sorted, each once.
+  void dependents(const std::vector<int>& vertices, std::vector<int>& out) const;
   const std::vector<int>& quadsAround(int v) const { return quadsOf_[v]; }
 
 private:

@@ -180,12 +180,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
         for (int w : neighbours[members[i]])
           if (inRegion[w] && !fixed[w] && part[w] < 0) part[w] = seed, members.push_back(w);
       std::vector<int> affected;
-      for (int v : members) {
-        jacobian.dependents(v, around);
-        affected.insert(affected.end(), around.begin(), around.end());
-      }
-      std::sort(affected.begin(), affected.end());
-      affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+      jacobian.dependents(members, affected);
       jacobian.values(affected, before);
       int foldedBefore = 0;
       for (double j : before) foldedBefore += j <= 0;
@@ -282,7 +277,6 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   const QuadJacobian jacobian(quads);
   std::vector<Vec3> next(quads.positions);
   std::vector<double> before(quads.numQuads()), after;
-  std::vector<int> dependent;
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
     jacobian.all(before);
@@ -331,12 +325,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
       }
       report.revertedMoves += int(reverted.size());
       std::vector<int> candidatesToCheck;
-      for (int v : reverted) {
-        jacobian.dependents(v, dependent);
-        candidatesToCheck.insert(candidatesToCheck.end(), dependent.begin(), dependent.end());
-      }
-      std::sort(candidatesToCheck.begin(), candidatesToCheck.end());
-      candidatesToCheck.erase(std::unique(candidatesToCheck.begin(), candidatesToCheck.end()), candidatesToCheck.end());
+      jacobian.dependents(reverted, candidatesToCheck);
       jacobian.values(candidatesToCheck, after);
       check.clear();
       for (std::size_t i = 0; i < candidatesToCheck.size(); ++i)
