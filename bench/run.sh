@@ -483,6 +483,30 @@ whole command, output files included):
 | fertility (α 30, k 30) | 0.40 → 0.40 s | 2.80 → 1.76 s (1.59×) | 1.06 → 0.76 s | 6.77 → 4.68 s (1.45×) |
 | rockerarm (α 30, k 30) | 0.37 → 0.34 s | 1.76 → 1.24 s (1.42×) | 0.20 → 0.25 s | 4.79 → 3.65 s (1.31×) |
 
+### Scale series (seventh session, 2026-12-03)
+
+`bash bench/scale.sh` runs `fcql run` (default parameters) on fertility and its Loop
+subdivisions (`bench/subdivide.py`): 28K, 112K, 447K and 1.79M faces. Times are `time_s.*` of
+stats.json in seconds, *wall* and *peak* from GNU time, Release build, on the 2-core VM while
+other jobs ran beside it (load 4–8: the 1.79M row ran beside two builds and two fuzzers, and is
+slow by about 2×):
+
+| faces | G nodes | field | graph | tracing | ILP | propagation | cut | quad | metrics | total | wall | peak MiB | quads |
+|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+| 27954 | 1351818 | 0.47 | 1.63 | 0.66 | 0.04 | 0.01 | 0.18 | 0.88 | 0.07 | 4.13 | 4.20 | 178 | 5876 |
+| 111816 | 5334076 | 2.28 | 3.25 | 1.09 | 0.03 | 0.00 | 0.36 | 1.50 | 0.27 | 9.06 | 9.11 | 674 | 3124 |
+| 447264 | 21042290 | 9.15 | 14.79 | 4.38 | 0.02 | 0.00 | 1.26 | 5.63 | 0.93 | 37.28 | 37.53 | 2591 | 3166 |
+| 1789056 | 83597900 | 73.81 | 125.33 | 24.26 | 0.03 | 0.00 | 17.84 | 61.59 | 8.10 | 347.01 | 351.13 | 10292 | 3169 |
+
+Memory grows linearly (×3.8, ×3.8, ×4.0 for ×4 faces; 674 MB at 112K, below the 2 GB asked
+for 100K), time nearly so up to 447K (×2.2, ×4.1) and by ×9.4 to 1.79M under the heavier load;
+graph G (47 nodes a face) dominates, then the quad stage and the field. The 1.79M-face run
+completes within 10.3 GB. Before graph G is built, `fcql` estimates the run's memory (about
+500/φ nodes a face, 130 bytes a node) and warns when it comes near the memory the machine has
+free, naming `--phi` and a coarser mesh as what lowers it. The quad count stays near 3,170 once
+the surface is smooth: the target edge is 2% of the diagonal whatever the resolution (the 28K
+original needs finer quads to stay within 1% of its creased surface).
+
 ### The same result on any machine (seventh session, 2026-12-03)
 
 Every budget that changed a result was a number of seconds: the selection's stall (1 s without
