@@ -503,9 +503,10 @@ for 100K), time nearly so up to 447K (×2.2, ×4.1) and by ×9.4 to 1.79M under 
 graph G (47 nodes a face) dominates, then the quad stage and the field. The 1.79M-face run
 completes within 10.3 GB. Before graph G is built, `fcql` estimates the run's memory (about
 500/φ nodes a face, 130 bytes a node) and warns when it comes near the memory the machine has
-free, naming `--phi` and a coarser mesh as what lowers it. The quad count stays near 3,170 once
-the surface is smooth: the target edge is 2% of the diagonal whatever the resolution (the 28K
-original needs finer quads to stay within 1% of its creased surface).
+free, naming `--phi` and a coarser mesh as what lowers it. The quad count falls from 5,876 to
+about 3,150 after one subdivision at the same target edge: the smoother surfaces get conforming
+layouts (123 patches, 0 t-junctions, no zero-chain split), where the original's 156 patches
+and 6 t-junctions needed 6 splits, each refining the grid around it.
 
 ### The same result on any machine (seventh session, 2026-12-03)
 
