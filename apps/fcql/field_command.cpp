@@ -38,6 +38,7 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet,
   if (!example && pos.empty()) throw UsageError("missing input: give a MESH file (.obj .ply .off) or --example NAME");
   if (pos.size() > 1) throw UsageError("unexpected argument '" + pos[1] + "'");
   double sharpAngle = cl.number("sharp-angle", 35.0, 0.0, 180.0);
+  double fieldScale = cl.number("field-scale", 0.02, 0.0, 1.0);
 
   FieldStage s;
   auto start = std::chrono::steady_clock::now();
@@ -71,6 +72,7 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet,
     progress(quiet, "computing a smooth curvature-aligned cross field");
     FieldGenerationOptions options;
     options.sharpAngleDeg = sharpAngle;
+    options.scale = fieldScale;
     s.field = generateCrossField(s.mesh, options, &report);
   }
   s.analysis = analyzeField(s.mesh, s.field);
@@ -91,6 +93,7 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet,
   stats.set("field.index_sum", formatQuarterIndex(s.analysis.indexSumQuarters()));
   if (!cl.has("field")) {
     stats.set("field.sharp_angle", sharpAngle);
+    stats.set("field.scale", fieldScale);
     stats.set("field.sharp_edges", report.sharpEdges);
     stats.set("field.constrained_faces", report.constrainedFaces);
   }
@@ -108,7 +111,7 @@ FieldStage runFieldStage(const CommandLine& cl, StatsJson& stats, bool quiet,
 }
 
 int fieldCommand(int argc, char** argv) {
-  CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "out", "example"}, {"quiet"});
+  CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "field-scale", "out", "example"}, {"quiet"});
   requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   StatsJson stats;

@@ -77,7 +77,7 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
 
 int layoutCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
-                 {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall"}, {"quiet"});
+                 {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall"}, {"quiet"});
   requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   TracingParameters tp = readTracingParameters(cl);

@@ -101,7 +101,7 @@ std::string candidatesObj(const SeparatrixGraph& h) {
 }
 
 int traceCommand(int argc, char** argv) {
-  CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "out", "example", "alpha", "k", "phi", "threads"}, {"quiet"});
+  CommandLine cl(argc, argv, 2, {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads"}, {"quiet"});
   requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   TracingParameters params = readTracingParameters(cl);

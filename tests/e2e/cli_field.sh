@@ -87,6 +87,7 @@ printf '4\n4\n1 0 0\n1 0 0\n' >"$tmp/truncated.rosy"
 expect_error truncated_field "truncated" field "$tmp/tet.obj" --field "$tmp/truncated.rosy"
 expect_error sharp_angle_range "sharp-angle must be between 0 and 180" field "$tmp/tet.obj" --sharp-angle 500
 expect_error sharp_angle_nan "sharp-angle must be a number" field "$tmp/tet.obj" --sharp-angle abc
+expect_error field_scale_range "field-scale must be between 0 and 1" field "$tmp/tet.obj" --field-scale 2
 expect_error unknown_option "unknown option --alpah" field "$tmp/tet.obj" --alpah 3
 
 if [ $failures -gt 0 ]; then echo "$failures check(s) failed"; exit 1; fi

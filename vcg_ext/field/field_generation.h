@@ -4,8 +4,10 @@
 // frame) minimising a smoothness energy built with the discrete Levi-Civita connection across
 // edges, plus a soft alignment to the principal curvature directions weighted by their
 // anisotropy, with hard alignment of faces incident to sharp edges (dihedral angle above a
-// threshold) and to border edges. One sparse Hermitian solve (CHOLMOD), a few normalising
-// refinement steps, then normalisation. See field_generation.cpp for the formulas.
+// threshold) and to border edges. The connection's curvature is spread over a length tied to
+// the layout's scale (FieldGenerationOptions::scale), so that noise makes no singularities.
+// One sparse Hermitian solve (CHOLMOD), a few normalising refinement steps, then
+// normalisation. See field_generation.cpp for the formulas.
 //
 // Sharp edges constrain the field only where they form feature lines: runs of sharp edges that
 // go on nearly straight for a few edges (or for a tenth of the bounding-box diagonal). Isolated
@@ -27,6 +29,12 @@ struct FieldGenerationOptions {
   /// Dimensionless; the built-in default is 200. Larger values follow the principal curvature
   /// directions more closely at the price of more singularities.
   double curvatureWeight = -1;  ///< negative: the built-in default
+  /// The length, as a fraction of the bounding-box diagonal, over which the surface's curvature
+  /// is spread before it places singularities (see field_generation.cpp, "Scale"): bumps smaller
+  /// than this make no singularity pairs. 0 gives the field of the unmodified connection (one
+  /// singularity pair per noisy bump); at most 1; negative: the built-in default, 0.02 (the edge
+  /// of `fcql run`'s default quads).
+  double scale = -1;
 };
 
 struct FieldGenerationReport {
