@@ -485,8 +485,8 @@ whole command, output files included):
 
 ### Scale series (seventh session, 2026-12-03)
 
-`bash bench/scale.sh` runs `fcql run` (default parameters) on fertility and its Loop
-subdivisions (`bench/subdivide.py`): 28K, 112K, 447K and 1.79M faces. Times are `time_s.*` of
+Measured before the cleaner fields below. `bash bench/scale.sh` runs `fcql run` (default
+parameters) on fertility and its Loop subdivisions (`bench/subdivide.py`): 28K, 112K, 447K and 1.79M faces. Times are `time_s.*` of
 stats.json in seconds, *wall* and *peak* from GNU time, Release build, on the 2-core VM while
 other jobs ran beside it (load 4–8: the 1.79M row ran beside two builds and two fuzzers, and is
 slow by about 2×):
@@ -598,7 +598,8 @@ short, the log warns that the result depends on the machine, and stats.json coun
 solve without the stretch bound still leave patches that disagree, every patch is now split
 once (§4.4's worst case), which always makes the counts agree, instead of an error.
 
-All 12 shared meshes with the bench's parameters, Release build, each run three times: quiet
+All 12 shared meshes with the bench's parameters (measured before the cleaner fields above,
+and again after them: see the end of this section), Release build, each run three times: quiet
 (the machine still had a load of about 4 from other jobs), with both cores kept busy by two
 spinning processes, and pinned to one core (`taskset -c 0`). `quad.obj` and `separatrices.obj`
 are byte-identical in the three runs on every mesh, and the figures are those of the table
