@@ -14,10 +14,11 @@ cmake --build build -j2
 (cd build && ctest --output-on-failure -j2)
 # The sanitizer build: the core, fcql and the unit tests (no MeshLab plugin), RelWithDebInfo.
 # Its ctest runs the unit tests and the CLI end-to-end tests (the readers, the layout cut, the
-# quadrangulation, every bad-input class); MeshLab, pymeshlab and fuzz tests are left to the
-# build above.
+# quadrangulation, every bad-input class); MeshLab, pymeshlab and fuzz tests, and the quality
+# sweep over every shared mesh at two sizes (e2e.cli_run_shared, minutes even unsanitized), are
+# left to the build above.
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFCQL_SANITIZE=ON -DFCQL_BUILD_PLUGIN=OFF >/dev/null
 cmake --build build-sanitize -j2
 cd build-sanitize
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --output-on-failure -j2 -E '^(fuzz|e2e\.meshlab|e2e\.pymeshlab)'
+  ctest --output-on-failure -j2 -E '^(fuzz|e2e\.meshlab|e2e\.pymeshlab|e2e\.cli_run_shared)'
