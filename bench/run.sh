@@ -625,6 +625,13 @@ files with `--threads 1`, 2 and 8. The times above are under a load of about 4 a
 comparable with the table's; the dragon's quad stage now runs its large side-length parts to
 1,500 nodes (0.5–2.5 s each) where the 2 s limit stopped them before.
 
+After the cleaner fields (the same three conditions, 2026-12-03, 10:04–10:08): byte-identical
+again on all 12 meshes; the figures are those of the table at the top (bunny 79 patches, 2
+t-junctions, 7,824 quads; fertility 126, 2, 7,334; rockerarm 99, 4, 8,294; kitten 63, 2, 4,215;
+camelhead 97, 6, 67,666 after three global refinements; the dragon and the meshes with their own
+field as above). The supernodal CHOLMOD path of larger meshes gives the same field with 1, 2
+and 8 OpenMP threads (fertility at 447K faces).
+
 ### The 0-1 program as a set packing, graph H's crossings as cliques (sixth session, 2026-12-02)
 
 The separatrix selection is a set packing: maximise Σ w·x over 0-1 variables with at most one
