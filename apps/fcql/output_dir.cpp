@@ -13,13 +13,13 @@ namespace fcql {
 std::string OutputDir::problem(const std::string& dir) {
   if (dir.empty()) return "--out needs a directory name";
   std::error_code ec;
-  fs::path at = fs::absolute(fs::path(dir), ec);
+  const fs::path target = fs::absolute(fs::path(dir), ec);
   if (ec) return dir + ": not a usable path (" + ec.message() + ")";
   // The nearest part of the path that exists must be a directory we may write into.
+  fs::path at = target;
   while (!fs::exists(fs::symlink_status(at, ec)) && at.has_parent_path() && at != at.parent_path()) at = at.parent_path();
   if (fs::exists(at, ec) && !fs::is_directory(at, ec))
-    return dir + ": " + (at == fs::absolute(fs::path(dir)) ? std::string("is a file, not a directory")
-                                                             : at.string() + " is a file, not a directory");
+    return dir + ": " + (at == target ? std::string("is a file, not a directory") : at.string() + " is a file, not a directory");
   if (access(at.c_str(), W_OK | X_OK) != 0)
     return dir + ": cannot write into " + at.string() + " (permission denied)";
   return "";
