@@ -58,16 +58,18 @@ machine="$(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /pro
   echo "lilium: their own field). Times in seconds (wall clock; tracing runs on all cores). Paper: Table 1 of"
   echo "Pietroni et al. 2016, on their machine, with their own fields and, for rockerarm, a 70K-face mesh."
   echo
-  echo "S: singularities; t-j: t-junctions; invalid: patches that are not 4-sided disks; quads and irr.:"
-  echo "faces and irregular vertices of the quad mesh; mis. %: quads whose edges are more than π/16 off the"
+  echo "S: singularities; t-j: t-junctions; dangling: ports left dangling after the solving cycle; invalid:"
+  echo "patches that are not 4-sided disks; quads and irr.: faces and irregular vertices of the quad mesh; BC:"
+  echo "patches of the quad mesh's base complex (the regions its own separatrices bound: the layout's patches"
+  echo "when the quad mesh keeps the layout's structure); mis. %: quads whose edges are more than π/16 off the"
   echo "field (the worse of a quad's two directions: shear counts); mis. faces %: input faces where the cross the"
   echo "quads follow, fitted to a quad's two directions, is more than π/16 off the field, as the paper's Table 2"
   echo "counts them (in brackets the paper's figure, for its own field); SJ: scaled Jacobian (min / mean); Hd %:"
   echo "Hausdorff distance to the input, % of the bounding-box diagonal; ZC: patches split for zero chains; peak:"
   echo "maximum resident memory of the run."
   echo
-  echo "| mesh | faces | S | α | k | G nodes | G arcs | H arcs | patches | t-j | invalid | quads | irr. | mis. % | mis. faces % | SJ min / mean | Hd % | ZC | field | graph | tracing | ILP | quad | total | layout | peak MiB | paper \|G\| / patches / t-j / time | paper time ÷ ours: layout / total |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|"
+  echo "| mesh | faces | S | α | k | G nodes | G arcs | H arcs | patches | t-j | dangling | invalid | quads | irr. | BC | mis. % | mis. faces % | SJ min / mean | Hd % | ZC | field | graph | tracing | ILP | quad | total | layout | peak MiB | paper \|G\| / patches / t-j / time | paper time ÷ ours: layout / total |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|"
 } > "$out/results.md"
 failures=() pictures=()
 
@@ -108,7 +110,8 @@ for name in "${names[@]}"; do
   fi
   mem=$(( $(grep -v '^Command' "$out/$name.mem" | tail -1) / 1024 ))
   if [ -z "$failed" ]; then
-    quads="$(value "$s" quad faces) | $(value "$s" quad irregular_vertices) | $(fmt %.1f "$(value "$s" quad misaligned_pct)")"
+    quads="$(value "$s" quad faces) | $(value "$s" quad irregular_vertices) | $(value "$s" quad base_complex_patches)"
+    quads+=" | $(fmt %.1f "$(value "$s" quad misaligned_pct)")"
     quads+=" | $(fmt %.1f "$(value "$s" quad misaligned_faces_pct)")${paper_mis:+ ($paper_mis)}"
     quads+=" | $(fmt %.2f "$(value "$s" quad min_scaled_jacobian)") / $(fmt %.2f "$(value "$s" quad mean_scaled_jacobian)")"
     hd=$(value "$s" quad hausdorff_rel)
@@ -117,7 +120,7 @@ for name in "${names[@]}"; do
     quads+=" | $(fmt %.2f "$(value "$s" time_s ilp)") | $(fmt %.2f "$(value "$s" time_s quadrangulation)") | $(fmt %.2f "$(value "$s" time_s total)")"
   else
     failures+=("$name")
-    quads="quad stage failed: $failed ||||||"
+    quads="quad stage failed: $failed |||||||"
     quads+=" | $(fmt %.2f "$(value "$s" time_s field)") | $(fmt %.2f "$(value "$s" time_s graph)") | $(fmt %.2f "$(value "$s" time_s tracing)")"
     quads+=" | $(fmt %.2f "$(value "$s" time_s ilp)") | – | $(fmt %.2f "$(value "$s" time_s total)")"
   fi
@@ -132,10 +135,11 @@ for name in "${names[@]}"; do
     ratio=$(awk -v p="$paper_time" -v l="$layout_s" -v t="$total_s" -v f="$failed" \
       'BEGIN { if (f != "") printf "%.1f× / –", p / l; else printf "%.1f× / %.1f×", p / l, p / t }')
   fi
-  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' \
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' \
     "$name" "$(value "$s" mesh faces)" "$(value "$s" field singularities)" "$alpha" "$k" \
     "$(value "$s" graph_g nodes)" "$(value "$s" graph_g arcs)" "$(value "$s" graph_h arcs)" \
-    "$(value "$s" layout patches)" "$(value "$s" layout t_junctions)" "$(value "$s" layout invalid_patches)" \
+    "$(value "$s" layout patches)" "$(value "$s" layout t_junctions)" "$(value "$s" layout dangling_ports)" \
+    "$(value "$s" layout invalid_patches)" \
     "$quads" "$layout_s" "$mem" "$paper" "$ratio" >> "$out/results.md"
   if "$fcql" render "$out/$name" --size 480 "${view[@]}" --out "$here/bench/images/$name.png" --quiet 2>"$out/$name.render.err"; then
     pictures+=("$name")

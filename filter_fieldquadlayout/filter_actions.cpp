@@ -80,6 +80,7 @@ void addQuadFigures(FilterOutcome& o, const QuadStepResult& q) {
   addInt(o, "quads", q.quad.mesh.numQuads());
   addInt(o, "quad_vertices", q.quad.mesh.numVertices());
   addInt(o, "irregular_vertices", q.quad.report.irregularVertices);
+  addInt(o, "base_complex_patches", q.baseComplexPatches);
   addInt(o, "quad_genus", q.quad.report.genus);
   addInt(o, "split_patches", q.quad.splitPatches);
   addInt(o, "time_limited_parts", q.quad.timeLimitedParts);

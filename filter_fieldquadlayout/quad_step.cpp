@@ -1,5 +1,6 @@
 #include "quad_step.h"
 
+#include "metrics/base_complex.h"
 #include "metrics/quad_quality.h"
 
 #include <algorithm>
@@ -29,6 +30,8 @@ QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult
   stage.targetEdgeLength = r.targetEdgeLength;
   stage.ilpTimeLimit = layoutParams.ilpTimeLimit;
   r.quad = fcql::quadrangulate(layout.patches, stage);
+  r.layoutPatches = int(layout.patches.patches.size());
+  if (r.quad.report.manifold) r.baseComplexPatches = fcql::measureBaseComplex(r.quad.mesh).patches;
 
   progress(90, "quad layer");
   const fcql::QuadMesh& q = r.quad.mesh;
@@ -78,6 +81,9 @@ std::vector<std::string> describeQuadStep(const QuadStepResult& r) {
                   std::to_string(rep.irregularVertices) + " irregular vertices, genus " +
                   std::to_string(rep.genus) + ", " + std::to_string(rep.borderLoops) +
                   " border loops (target edge length " + target + ")");
+  if (r.baseComplexPatches >= 0)
+    lines.push_back("Base complex of the quad mesh: " + std::to_string(r.baseComplexPatches) + " patches (the layout has " +
+                    std::to_string(r.layoutPatches) + ")");
   if (r.quad.splitPatches > 0)
     lines.push_back("Zero chains: " + std::to_string(r.quad.splitPatches) +
                     " patches split by Catmull-Clark steps (" + std::to_string(r.quad.splitRounds) + " rounds)");

@@ -30,6 +30,8 @@ struct QuadStepResult {
   double targetEdgeLength = 0;
   std::vector<float> scaledJacobian;  ///< per quad
   int invertedQuads = 0;              ///< quads whose scaled Jacobian is <= 0 (quad.inverted_quads)
+  int baseComplexPatches = -1;        ///< the quad mesh's own patches (quad.base_complex_patches)
+  int layoutPatches = 0;              ///< the layout's patches, for comparison
   TriangleLayerData layer;
   double seconds = 0;
 };

@@ -4,6 +4,7 @@
 
 #include "field/field_io.h"
 #include "layout/layout_io.h"
+#include "metrics/base_complex.h"
 #include "metrics/quad_quality.h"
 #include "quadrangulation/quadrangulation.h"
 
@@ -93,6 +94,12 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.faces", qs.mesh.numQuads());
   stats.set("quad.vertices", qs.mesh.numVertices());
   stats.set("quad.irregular_vertices", qs.report.irregularVertices);
+  // The quad mesh's own coarse structure: as many patches as the layout's when it kept it.
+  const int baseComplexPatches = qs.report.manifold ? measureBaseComplex(qs.mesh).patches : -1;
+  stats.set("quad.base_complex_patches", baseComplexPatches);
+  if (baseComplexPatches >= 0)
+    progress(quiet, "base complex of the quad mesh: " + std::to_string(baseComplexPatches) + " patches (the layout has " +
+                        std::to_string(ls.patches.patches.size()) + ")");
   stats.set("quad.genus", qs.report.genus);
   stats.set("quad.border_loops", qs.report.borderLoops);
   stats.set("quad.manifold", qs.report.manifold);

@@ -2,6 +2,7 @@
 #include "layout/patch_closing.h"
 #include "mesh/generators.h"
 #include "field/field_io.h"
+#include "metrics/base_complex.h"
 #include "metrics/quad_quality.h"
 #include "mesh/mesh_io.h"
 #include "quadrangulation/quadrangulation.h"
@@ -199,6 +200,19 @@ TEST(Quadrangulation, FullStageOnGeneratedMeshesIsCloseToTheSurfaceAndUnfolded) 
     const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.02);
     checkQuadMesh(*q, r, name);
   }
+}
+
+TEST(Quadrangulation, AConformingLayoutsQuadMeshHasItsPatchesAsBaseComplex) {
+  // The rounded box's layout is conforming (no t-junction, no zero-chain split): the quad
+  // mesh's own separatrices are the layout's, and its base complex is the layout's patches.
+  auto q = layoutOf(makeExample("rounded_box"));
+  ASSERT_EQ(q->layout.tJunctions, 0);
+  ASSERT_TRUE(q->layout.unresolvedPorts.empty());
+  const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.02);
+  ASSERT_EQ(r.splitPatches, 0);
+  const BaseComplex complex = measureBaseComplex(r.mesh);
+  EXPECT_EQ(complex.patches, int(q->patches.patches.size()));
+  EXPECT_EQ(complex.irregularVertices, q->analysis.numInteriorSingularities());
 }
 
 TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
