@@ -68,7 +68,9 @@ void addLayoutFigures(FilterOutcome& o, const LayoutStepResult& r) {
   addInt(o, "t_junctions", l.tJunctions);
   addInt(o, "border_connections", l.borderConnections);
   addInt(o, "iterations", l.iterations);
-  addInt(o, "dangling_ports", long(l.unresolvedPorts.size()));
+  addInt(o, "dangling_ports", l.danglingAfterCycle);  // as fcql's layout.dangling_ports
+  addInt(o, "unresolved_ports", long(l.unresolvedPorts.size()));
+  addInt(o, "completion_accepted", l.completion.accepted);
   addInt(o, "dead_ends_removed", l.deadEndsRemoved);
   addInt(o, "added_corners", r.layout.patches.addedCorners);
   addInt(o, "ilp_time_limited", l.ilpTimeLimited);

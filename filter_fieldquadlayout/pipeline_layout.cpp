@@ -67,8 +67,16 @@ std::vector<std::string> describeLayout(const LayoutResult& r) {
     lines.push_back("Warning: the 0-1 programs' time limit (a safety stop) cut " + std::to_string(l.ilpTimeLimited) +
                     " parts short; the best selection found was used, and this layout depends on the machine's speed");
   for (const std::string& m : l.messages) lines.push_back("Note: " + m);
+  const fcql::CompletionReport& c = l.completion;
+  if (c.trials > 0)
+    lines.push_back("Completion: t-junctions and unresolved ports " + std::to_string(c.tJunctionsBefore) + " -> " +
+                    std::to_string(c.tJunctionsAfter) + " (" + std::to_string(c.accepted) + " of " +
+                    std::to_string(c.trials) + " trials kept)");
+  for (std::size_t i = 0; i < l.leftPorts.size() && i < fcql::kLeftPortLines; ++i) lines.push_back("Left: " + l.leftPorts[i]);
+  if (l.leftPorts.size() > fcql::kLeftPortLines)
+    lines.push_back("... and " + std::to_string(l.leftPorts.size() - fcql::kLeftPortLines) + " more ports left");
   lines.push_back("Time: 0-1 programs " + formatSeconds(l.ilpSeconds) + ", solving cycle tracing " +
-                  formatSeconds(l.cycleTracingSeconds) + ", propagation " +
+                  formatSeconds(l.cycleTracingSeconds) + ", completion " + formatSeconds(l.completionSeconds) + ", propagation " +
                   formatSeconds(l.propagationSeconds) + ", cut into patches " +
                   formatSeconds(r.cutSeconds));
   return lines;

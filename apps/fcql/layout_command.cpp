@@ -16,6 +16,7 @@ LayoutParameters readLayoutParameters(const CommandLine& cl) {
   LayoutParameters p;
   p.ilpTimeLimit = cl.number("ilp-time-limit", p.ilpTimeLimit, 1.0, 86400.0);
   p.ilpStallNodes = cl.integer("ilp-stall", int(p.ilpStallNodes), 0, 100000000);
+  p.completionTrials = cl.integer("completion-trials", p.completionTrials, 0, 100000);
   return p;
 }
 
@@ -25,6 +26,16 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
                       " nodes bring nothing better; safety time limit " + std::to_string(int(params.ilpTimeLimit)) + " s each)");
   ls.layout = solveLayout(*ts.graph, ts.h, params);
   for (const auto& m : ls.layout.messages) progress(quiet, "note: " + m);
+  const CompletionReport& completion = ls.layout.completion;
+  if (completion.trials > 0)
+    progress(quiet, "completion: t-junctions and unresolved ports " + std::to_string(completion.tJunctionsBefore) + " -> " +
+                        std::to_string(completion.tJunctionsAfter) + " (" + std::to_string(completion.accepted) + " of " +
+                        std::to_string(completion.trials) + " trials kept, " + std::to_string(completion.freedSeparatrices) +
+                        " separatrices freed and their ports matched again)");
+  for (std::size_t i = 0; i < ls.layout.leftPorts.size() && i < kLeftPortLines; ++i)
+    progress(quiet, "left: " + ls.layout.leftPorts[i]);
+  if (ls.layout.leftPorts.size() > kLeftPortLines)
+    progress(quiet, "... and " + std::to_string(ls.layout.leftPorts.size() - kLeftPortLines) + " more ports left");
   if (ls.layout.ilpTimeLimited > 0)
     progress(quiet, "warning: the 0-1 programs' time limit (--ilp-time-limit, a safety stop) cut " +
                         std::to_string(ls.layout.ilpTimeLimited) + " parts short: this layout depends on the machine's speed");
@@ -71,13 +82,19 @@ LayoutStage runLayoutStage(const FieldStage& fs, const TraceStage& ts, const Lay
   stats.set("time_s.ilp", ls.layout.ilpSeconds);
   stats.set("time_s.cycle_tracing", ls.layout.cycleTracingSeconds);
   stats.set("time_s.propagation", ls.layout.propagationSeconds);
+  stats.set("time_s.completion", ls.layout.completionSeconds);
+  stats.set("params.completion_trials", params.completionTrials);
+  stats.set("layout.completion_trials", completion.trials);
+  stats.set("layout.completion_accepted", completion.accepted);
+  stats.set("layout.completion_freed", completion.freedSeparatrices);
+  stats.set("layout.t_junctions_before_completion", completion.tJunctionsBefore);
   stats.set("time_s.cut", ls.cutSeconds);
   return ls;
 }
 
 int layoutCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
-                 {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall"}, {"quiet"});
+                 {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall", "completion-trials"}, {"quiet"});
   requireOutputDir(cl);
   bool quiet = cl.has("quiet");
   TracingParameters tp = readTracingParameters(cl);

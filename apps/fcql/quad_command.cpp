@@ -138,7 +138,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
 
 int quadCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
-                 {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall", "scale",
+                 {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall", "completion-trials", "scale",
                   "target-faces", "smooth", "max-deviation"},
                  {"quiet"});
   requireOutputDir(cl);

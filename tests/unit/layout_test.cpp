@@ -233,7 +233,9 @@ TEST(Layout, TJunctionsEndOnTheirSeparatrixOnTwoKittens) {
   for (int f = 0; f < one.numFaces(); ++f) faces.push_back({one.vertex(f, 0) + n, one.vertex(f, 1) + n, one.vertex(f, 2) + n});
   SurfaceMesh two(positions, faces);
   ASSERT_EQ(two.numComponents(), 2);
-  auto s = solve(two, generateCrossField(two));
+  LayoutParameters lp;
+  lp.completionTrials = 0;  // the t-junction passes are what this is about
+  auto s = solve(two, generateCrossField(two), {}, lp);
   checkLayoutInvariants(*s);
   EXPECT_GT(s->layout.tJunctions, 0);
   for (const auto& p : s->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
@@ -362,4 +364,77 @@ TEST(Layout, SinksShownOutOfReachStayOutOfLaterSearches) {
   // nothing out of reach.
   memory.note(3, memory.allowedFrom(3, fewer), 10, {sinkAt(0), sinkAt(2)});
   for (int q = 0; q < 5; ++q) EXPECT_FALSE(memory.outOfReach(3, q)) << q;
+}
+
+#include "layout/layout_completion.h"
+
+TEST(LayoutCompletion, CoverageFirstWeightsPreferTwoSeparatricesToOneShortOne) {
+  // Ports 0..3. Arc 0 joins 0–1 and arc 1 joins 2–3 (length 1 each); arc 2 joins 1–2 and is
+  // ten times shorter. Eq. 4 takes arc 2 alone (weight 10 against 1 + 1), which leaves ports 0
+  // and 3 dangling; covering first takes arcs 0 and 1.
+  SeparatrixGraph h;
+  auto arc = [&](int a, int b, double length) {
+    CandidateSeparatrix c;
+    c.portA = a;
+    c.portB = b;
+    c.length = length;
+    c.path.segments = {{int(h.arcs.size()), 0, 0.5, 1.5}};  // a face of its own: no conflict
+    h.arcs.push_back(c);
+  };
+  arc(0, 1, 1.0);
+  arc(2, 3, 1.0);
+  arc(1, 2, 0.1);
+  h.arcsAtPort = {{0}, {0, 2}, {1, 2}, {1}};
+  classifyCrossings(makeSphere(1), h);
+  ASSERT_TRUE(h.tangentialPairs.empty());
+  EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{2}));
+  weighCoverageFirst(h);
+  EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{0, 1}));
+}
+
+TEST(LayoutCompletion, ASeparatrixIsTangentialToItselfOnlyOnTheRoundedBox) {
+  // The rounded box's separatrices meet only at its corners (orthogonally, or not at all):
+  // each one's only tangential blocker is itself.
+  auto s = solve(makeExample("rounded_box"), generateCrossField(makeExample("rounded_box")));
+  const BarrierSet barriers = layoutBarriers(*s->graph, s->layout);
+  ASSERT_GT(s->layout.separatrices.size(), 0u);
+  for (int i = 0; i < int(s->layout.separatrices.size()); ++i)
+    EXPECT_EQ(tangentialBlockers(s->layout.separatrices[i].path, barriers), (std::vector<int>{i})) << i;
+}
+
+TEST(LayoutCompletion, KittenGetsAConformingLayout) {
+  // The solving cycle alone leaves two dangling ports (two t-junctions); the completion frees
+  // the separatrices between them and matches every port.
+  std::string kitten = test::sharedMesh("kitten.obj");
+  if (kitten.empty()) GTEST_SKIP() << "../shared/data/meshes/kitten.obj is absent";
+  const SurfaceMesh mesh = loadMesh(kitten);
+  const CrossField field = generateCrossField(mesh);
+  LayoutParameters without;
+  without.completionTrials = 0;
+  auto before = solve(mesh, field, {}, without);
+  EXPECT_GT(before->layout.tJunctions, 0);
+  auto after = solve(mesh, field);
+  checkLayoutInvariants(*after);
+  EXPECT_EQ(after->layout.tJunctions, 0);
+  EXPECT_EQ(after->layout.danglingAfterCycle, 0);
+  EXPECT_TRUE(after->layout.unresolvedPorts.empty());
+  EXPECT_GE(after->layout.completion.accepted, 1);
+  EXPECT_LT(after->layout.completion.tJunctionsAfter, after->layout.completion.tJunctionsBefore);
+  for (const auto& p : after->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
+}
+
+TEST(LayoutCompletion, EveryPortLeftIsNamedWithItsReason) {
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
+  auto s = solve(m, f);
+  const std::size_t left = std::size_t(s->layout.tJunctions) + s->layout.unresolvedPorts.size();
+  ASSERT_EQ(s->layout.leftPorts.size(), left);
+  for (const std::string& line : s->layout.leftPorts) {
+    EXPECT_NE(line.find("port "), std::string::npos) << line;
+    // "port P (singularity at vertex V) ends at a t-junction: why"
+    const std::size_t what = line.find(") ");
+    ASSERT_NE(what, std::string::npos) << line;
+    const std::size_t why = line.find(": ", what);
+    ASSERT_NE(why, std::string::npos) << "no reason: " << line;
+    EXPECT_GT(line.size(), why + 20) << "no reason: " << line;
+  }
 }

@@ -27,19 +27,28 @@ struct Quadrangulated {
   PatchGraph sides;
 };
 
-std::unique_ptr<Quadrangulated> layoutOf(SurfaceMesh mesh, const CrossField* given = nullptr) {
+std::unique_ptr<Quadrangulated> layoutOf(SurfaceMesh mesh, const CrossField* given = nullptr,
+                                         const LayoutParameters& parameters = {}) {
   auto q = std::make_unique<Quadrangulated>();
   q->mesh = std::move(mesh);
   q->field = given ? *given : generateCrossField(q->mesh);
   q->analysis = analyzeField(q->mesh, q->field);
   q->graph = std::make_unique<GeodesicGraph>(q->mesh, q->field, q->analysis, TracingParameters{});
-  q->layout = solveLayout(*q->graph, traceCandidateSeparatrices(*q->graph), LayoutParameters{});
+  q->layout = solveLayout(*q->graph, traceCandidateSeparatrices(*q->graph), parameters);
   q->patches = buildPatchLayout(*q->graph, q->layout);
   bool disks = true;
   for (const auto& p : q->patches.patches) disks = disks && p.isDisk;
   if (!disks) closeNonDiskPatches(q->mesh, q->field, q->analysis, q->graph, q->layout, q->patches);
   q->sides = buildPatchGraph(q->patches);
   return q;
+}
+
+/// The layout without its completion step: it keeps the t-junctions (and zero chains) that
+/// the tests of their handling need.
+LayoutParameters withTJunctions() {
+  LayoutParameters p;
+  p.completionTrials = 0;
+  return p;
 }
 
 /// Valence of every vertex of a quad mesh (number of distinct edge neighbours).
@@ -473,7 +482,7 @@ TEST(Quadrangulation, SharedMeshesGiveCloseManifoldQuadMeshes) {
 
 TEST(Quadrangulation, ZeroChainOfTheBunnyIsResolved) {
   FCQL_REQUIRE_SHARED(bunny, "bunny.obj");
-  auto q = layoutOf(loadMesh(bunny));
+  auto q = layoutOf(loadMesh(bunny), nullptr, withTJunctions());
   const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.02);
   EXPECT_GT(r.splitPatches, 0) << "the bunny's layout no longer has a zero chain: pick another case";
   EXPECT_TRUE(r.lengths.inconsistentPatches.empty());
@@ -487,7 +496,7 @@ TEST(Quadrangulation, ZeroChainsLeftWhenTheRoundsRunOutAreResolvedBySplittingEve
   // split once (§4.4's worst case): its parts have single-segment sides only, so the counts
   // agree and the stage never fails on a valid layout.
   FCQL_REQUIRE_SHARED(kitten, "kitten.obj");
-  auto q = layoutOf(loadMesh(kitten));
+  auto q = layoutOf(loadMesh(kitten), nullptr, withTJunctions());
   QuadrangulationOptions options;
   options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
   options.maxSplitRounds = 0;
@@ -709,8 +718,10 @@ TEST(Quadrangulation, FandiskNeedsNoFinerPassOnceSmoothingSparesItsTips) {
   // Smoothing slid vertices off the fandisk's pointed corners and the quads strayed 1.1% from
   // the surface, so the whole stage ran again with smaller quads. Undoing the smoothing there
   // keeps the requested size within 1%.
+  // The layout of this case is the one with t-junctions: the conforming one (completion) has
+  // three nearly flat quads on a crease, a known exception of e2e.cli_run_shared (issue 21).
   FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
-  auto q = layoutOf(loadMesh(fandisk));
+  auto q = layoutOf(loadMesh(fandisk), nullptr, withTJunctions());
   const QuadrangulationResult r = quadrangulateWithDefaults(*q, 0.02);
   EXPECT_GT(r.restoredVertices, 0);
   EXPECT_EQ(r.refinements, 0);

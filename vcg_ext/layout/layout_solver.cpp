@@ -1,5 +1,7 @@
 #include "layout/layout_solver.h"
 
+#include "layout/layout_completion.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -39,13 +41,42 @@ void noteSelection(Layout& layout, const SelectionResult& r) {
   }
 }
 
+/// A line per port that propagation ended at a t-junction or could not resolve, with why the
+/// solving cycle and the completion left it.
+void nameLeftPorts(const GeodesicGraph& graph, Layout& layout) {
+  auto name = [&](int port, const std::string& what) {
+    std::string line = "port " + std::to_string(port) + " (singularity at vertex " +
+                       std::to_string(graph.ports()[port].vertex) + ") " + what;
+    auto why = layout.completion.reasons.find(port);
+    if (why != layout.completion.reasons.end()) line += ": " + why->second;
+    layout.leftPorts.push_back(line);
+  };
+  for (const auto& s : layout.separatrices)
+    if (s.kind == LayoutSeparatrix::TJunction) name(s.portA, "ends at a t-junction");
+  for (int p : layout.unresolvedPorts) name(p, "is left unresolved: no path from it reaches a separatrix, the border or another port");
+}
+
 }  // namespace
+
+void weighCoverageFirst(SeparatrixGraph& h) {
+  // Selection weighs an arc by mean length / its length. With every length raised by C, more
+  // than (arcs + 1) times all of them together, the weights differ by less than one arc's
+  // worth in any selection: covering a port more outweighs any saving in length, and among
+  // selections that cover as many, the shorter still wins.
+  double total = 0;
+  for (const auto& a : h.arcs) total += a.length;
+  const double raise = (double(h.arcs.size()) + 1) * std::max(total, 1e-12);
+  for (auto& a : h.arcs) a.length += raise;
+}
+
+BarrierSet layoutBarriers(const GeodesicGraph& graph, const Layout& layout) { return barriersOf(graph, layout); }
 
 void LayoutParameters::validate() const {
   if (!(ilpTimeLimit >= 1) || !std::isfinite(ilpTimeLimit))
     throw std::invalid_argument("ilp_time_limit must be at least 1 second");
   if (ilpStallNodes < 0) throw std::invalid_argument("ilp_stall must be 0 or more nodes");
   if (maxIterations < 1) throw std::invalid_argument("the solving cycle needs at least one iteration");
+  if (completionTrials < 0) throw std::invalid_argument("completion_trials must be 0 or more");
 }
 
 std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
@@ -57,26 +88,15 @@ std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
   return used;
 }
 
-Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params) {
-  params.validate();
-  Layout layout;
+void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
+                     const SelectionWeights weights, const std::vector<char>* sourcesOnly) {
+  // A search that ran out of graph before finding as many sinks as it was allowed proves the
+  // sinks it did not find out of reach of its port, and they stay out of reach in later
+  // rounds: the barriers only grow. Later searches leave them out, so they stop once the sinks
+  // still in reach are found, and a port with none left is not searched.
   const int numPorts = int(graph.ports().size());
-
-  // 1. The first 0-1 program on all candidates.
-  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStallNodes);
-  noteSelection(layout, first);
-  for (int a : first.selected) {
-    const auto& c = candidates.arcs[a];
-    layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, 1, c.path});
-  }
-  layout.selectedFromCandidates = int(first.selected.size());
-
-  // 2. The solving cycle. A search that ran out of graph before finding as many sinks as it
-  // was allowed proves the sinks it did not find out of reach of its port, and they stay out
-  // of reach in later rounds: the barriers only grow. Later searches leave them out, so they
-  // stop once the sinks still in reach are found, and a port with none left is not searched.
   SinksOutOfReach outOfReach(numPorts);
-  for (int iteration = 2; iteration <= params.maxIterations; ++iteration) {
+  for (int round = 0; round + 1 < params.maxIterations; ++round) {
     std::vector<char> used = usedPorts(graph, layout);
     std::vector<int> dangling;
     std::vector<char> free(numPorts, 0);
@@ -88,6 +108,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     std::vector<int> sources;
     std::vector<SearchOptions> options;
     for (int p : dangling) {
+      if (sourcesOnly && !(*sourcesOnly)[p]) continue;
       SearchOptions o;
       o.maxSinks = graph.parameters().k;
       o.barriers = &barriers;
@@ -103,22 +124,20 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
+    if (weights == SelectionWeights::CoverageFirst) weighCoverageFirst(more);
     SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStallNodes);
     noteSelection(layout, r);
     if (r.selected.empty()) break;
+    const int iteration = layout.iterations;
     for (int a : r.selected) {
       const auto& c = more.arcs[a];
       layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, iteration, c.path});
     }
   }
-  {
-    std::vector<char> used = usedPorts(graph, layout);
-    layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
-  }
-  if (!params.propagate) return layout;
+}
 
-  // 3. Propagation from the ports still dangling.
-  auto start = Clock::now();
+void propagateDanglingPorts(const GeodesicGraph& graph, Layout& layout) {
+  const int numPorts = int(graph.ports().size());
   std::vector<char> failed(numPorts, 0);
   for (;;) {
     std::vector<char> used = usedPorts(graph, layout);
@@ -135,12 +154,25 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     options.tJunctionMode = true;
     options.sinkAllowed = free;
     auto results = traceFromPorts(graph, dangling, options);
+    // On a surface with a border, a port whose path can reach the border (or another dangling
+    // port) across the layout, crossing separatrices orthogonally, goes there instead of
+    // stopping at the first one: a conforming line, where a t-junction is not.
+    std::vector<std::vector<TracedPath>> acrossResults;
+    if (graph.mesh().numBorderLoops() > 0) {
+      SearchOptions across = options;
+      across.tJunctionMode = false;
+      across.borderEnds = true;
+      acrossResults = traceFromPorts(graph, dangling, across);
+    }
     std::vector<const TracedPath*> found;
     for (std::size_t i = 0; i < results.size(); ++i) {
       // The own sink is excluded by sinkAllowed only if the port is not free: drop it here.
       const TracedPath* best = nullptr;
       for (const auto& p : results[i])
         if (p.sinkPort != dangling[i]) best = &p;
+      if (best && best->end == TracedPath::Barrier && !acrossResults.empty())
+        for (const auto& p : acrossResults[i])
+          if (p.end != TracedPath::Barrier && p.sinkPort != dangling[i]) best = &p;
       if (best) found.push_back(best);
       else failed[dangling[i]] = 1;
     }
@@ -178,6 +210,42 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   }
   for (int p = 0; p < numPorts; ++p)
     if (failed[p]) layout.unresolvedPorts.push_back(p);
+}
+
+Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params) {
+  params.validate();
+  Layout layout;
+
+  // 1. The first 0-1 program on all candidates.
+  SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStallNodes);
+  noteSelection(layout, first);
+  for (int a : first.selected) {
+    const auto& c = candidates.arcs[a];
+    layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, 1, c.path});
+  }
+  layout.selectedFromCandidates = int(first.selected.size());
+
+  // 2. The solving cycle.
+  runSolvingCycle(graph, layout, params, SelectionWeights::Length);
+  {
+    std::vector<char> used = usedPorts(graph, layout);
+    layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
+  }
+  // 2b. Completion: the separatrices that keep dangling ports apart are freed and the ports
+  // around them matched again, where that leaves fewer t-junctions.
+  if (params.completionTrials > 0) {
+    const auto start = Clock::now();
+    layout.completion = completeLayout(graph, layout, params);
+    layout.completionSeconds = since(start);
+    std::vector<char> used = usedPorts(graph, layout);
+    layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
+  }
+  if (!params.propagate) return layout;
+
+  // 3. Propagation from the ports still dangling.
+  auto start = Clock::now();
+  propagateDanglingPorts(graph, layout);
+  nameLeftPorts(graph, layout);
   layout.deadEndsRemoved = removeDeadEnds(graph, layout);
   if (layout.deadEndsRemoved > 0)
     layout.messages.push_back(std::to_string(layout.deadEndsRemoved) +

@@ -5,6 +5,9 @@
 // 2. Solving cycle: freeze the selection as barriers, search again from the dangling ports
 //    (sinks only at dangling ports), select among the new candidates, add; repeat until
 //    nothing new is added.
+// 2b. Completion (layout_completion.h): where ports are still dangling, the separatrices that
+//    keep them apart are freed and the ports around them matched again, coverage first;
+//    kept only where it leaves fewer t-junctions.
 // 3. Propagation: from every port still dangling, trace until the first orthogonal crossing
 //    with the layout (a t-junction), the border, or another dangling port. Paths are accepted
 //    shortest first in rounds; a path that meets another path accepted in the same round is
@@ -16,10 +19,14 @@
 #include "layout/separatrix_selection.h"
 #include "tracing/separatrix_graph.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
 namespace fcql {
+
+/// How many of Layout::leftPorts the front ends log, one line each (the rest are counted).
+constexpr std::size_t kLeftPortLines = 20;
 
 struct LayoutParameters {
   /// Seconds per 0-1 program (≥ 1): a safety stop only. Where it is reached the selection
@@ -33,6 +40,10 @@ struct LayoutParameters {
   /// dragon's first (33 nodes in the second it took on the project's machine).
   long ilpStallNodes = 50;
   int maxIterations = 20;    ///< bound on the solving cycle
+  /// Step 2b tries at most this many sets of separatrices to free (each a solving cycle on the
+  /// ports it frees plus a propagation to count the t-junctions): a bound in work, not time.
+  /// 0 leaves step 2b out.
+  int completionTrials = 24;
   bool propagate = true;     ///< step 3
 
   /// Throws std::invalid_argument naming the parameter.
@@ -47,23 +58,56 @@ struct LayoutSeparatrix {
   TracedPath path;
 };
 
+/// What step 2b did.
+struct CompletionReport {
+  int tJunctionsBefore = 0;  ///< t-junctions and unresolved ports propagation would leave before it
+  int tJunctionsAfter = 0;   ///< ... and after it
+  int trials = 0;            ///< sets of separatrices freed and matched again
+  int accepted = 0;          ///< trials kept (each left fewer t-junctions)
+  int freedSeparatrices = 0; ///< separatrices replaced in the trials kept
+  /// For the ports still dangling when it last looked: why no separatrix joins them.
+  std::map<int, std::string> reasons;
+};
+
 struct Layout {
   std::vector<LayoutSeparatrix> separatrices;
   int iterations = 0;             ///< 0-1 programs solved (first + cycle)
   int selectedFromCandidates = 0; ///< separatrices chosen in the first program
-  int danglingAfterCycle = 0;     ///< ports without a separatrix after the solving cycle
+  int danglingAfterCycle = 0;     ///< ports without a separatrix after the solving cycle and the completion
   int tJunctions = 0;
   int borderConnections = 0;
   std::vector<int> unresolvedPorts;  ///< dangling ports no propagation could resolve
+  /// Per t-junction or unresolved port: port, singularity vertex and why it was left.
+  std::vector<std::string> leftPorts;
   int deadEndsRemoved = 0;        ///< separatrices dropped by removeDeadEnds
   bool ilpTimeLimitHit = false;
   int ilpStalled = 0;             ///< parts of 0-1 programs stopped at the stall limit
   int ilpTimeLimited = 0;         ///< parts the safety time limit cut short
   std::vector<std::string> messages; ///< solver notes worth logging
-  double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0;
+  CompletionReport completion;
+  double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0, completionSeconds = 0;
 };
 
 Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params);
+
+// The steps of solveLayout, for the completion step and tests.
+
+/// How the solving cycle weighs its candidates: Eq. 4 (Length), or so that covering one port
+/// more outweighs any saving in length (CoverageFirst, weighCoverageFirst).
+enum class SelectionWeights { Length, CoverageFirst };
+/// Step 2: searches from the dangling ports with `layout` frozen as barriers, selection among
+/// the new candidates, until nothing is added (at most params.maxIterations − 1 rounds). With
+/// `sourcesOnly`, only the dangling ports it marks are searched from (every free port is a sink).
+void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
+                     SelectionWeights weights, const std::vector<char>* sourcesOnly = nullptr);
+/// Raises every arc's length by more than all of them together: the selection's weights
+/// (mean length / length) then favour covering more ports over any saving in length.
+void weighCoverageFirst(SeparatrixGraph& h);
+/// Step 3 without the dead-end removal: every dangling port traced to a t-junction, the
+/// border or another dangling port; ports that reach nothing join unresolvedPorts.
+void propagateDanglingPorts(const GeodesicGraph& graph, Layout& layout);
+/// The layout's separatrices as barriers, each with its index in layout.separatrices as id.
+BarrierSet layoutBarriers(const GeodesicGraph& graph, const Layout& layout);
 
 /// Removes the separatrices that end at an interior singular vertex reached by no other
 /// separatrix (its other ports unresolved, or a singularity of index 3/4, which has a single

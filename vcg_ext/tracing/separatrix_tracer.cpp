@@ -129,7 +129,7 @@ public:
     // Searches for sinks run on the reduced weights (sink_distance.h): a path's reduced length
     // is its length minus the source's distance to the nearest sink (a sink's own is 0).
     // T-junction searches end at crossings and at the border as well, so they run on Eq. 1.
-    const bool reduced = !opt.tJunctionMode;
+    const bool reduced = !opt.tJunctionMode && !opt.borderEnds;
     const double sourceOffset = reduced ? g_.sinkDistance(source) : 0.0;
     int sinks = 0;
     // Once every sink the search may stop at has been found, nothing more can be: stop there
@@ -139,7 +139,7 @@ public:
     for (int p = 0; p < int(g_.ports().size()); ++p)
       allowedSinks += p != port && (opt.sinkAllowed.empty() || opt.sinkAllowed[p] != 0);
     const int wanted = std::min(opt.maxSinks, allowedSinks);
-    if (wanted == 0 && !opt.tJunctionMode) return found;
+    if (wanted == 0 && !opt.tJunctionMode && !opt.borderEnds) return found;
     while (!heap.empty()) {
       auto [d, u] = heap.pop();
       if (u < 0) {  // a t-junction terminal: the path stops on a barrier
@@ -153,10 +153,10 @@ public:
         if (!allowed) continue;
         found.push_back(buildPath(port, u, double(d) + sourceOffset, TracedPath::Sink));
         found.back().sinkPort = p;
-        if (opt.tJunctionMode || ++sinks >= wanted) break;
+        if (opt.tJunctionMode || opt.borderEnds || ++sinks >= wanted) break;
         continue;
       }
-      if (opt.tJunctionMode && g_.isBorderTerminal(u)) {  // only t-junction searches enter them
+      if ((opt.tJunctionMode || opt.borderEnds) && g_.isBorderTerminal(u)) {  // only these searches enter them
         found.push_back(buildPath(port, u, d, TracedPath::Border));
         break;
       }
@@ -164,7 +164,7 @@ public:
       // their arcs are) before the relaxations, whose branches would otherwise take the
       // cache misses one at a time.
       for (const GeodesicGraph::Arc *a = g_.arcsBegin(u), *end = g_.arcsEnd(u); a != end; ++a) {
-        if (GeodesicGraph::isDeadEnd(*a) && !opt.tJunctionMode) continue;
+        if (GeodesicGraph::isDeadEnd(*a) && !opt.tJunctionMode && !opt.borderEnds) continue;
         const int v = GeodesicGraph::targetNode(*a);
         __builtin_prefetch(&state_[v]);
         g_.prefetchArcRange(v);
@@ -172,7 +172,7 @@ public:
       for (const GeodesicGraph::Arc *a = g_.arcsBegin(u), *end = g_.arcsEnd(u); a != end; ++a) {
         int v = a->target;
         if (GeodesicGraph::isDeadEnd(*a)) {
-          if (!opt.tJunctionMode) continue;  // paths reaching the border or a dead end are dropped
+          if (!opt.tJunctionMode && !opt.borderEnds) continue;  // paths reaching the border or a dead end are dropped
           v = ~v;
         }
         const float nd = d + (reduced ? a->weight : g_.arcLength(u, v));

@@ -51,6 +51,10 @@ struct SearchOptions {
   /// T-junction mode: the path ends at its first orthogonal crossing with a barrier, or at
   /// the border, whichever is nearest; sinks allowed by `sinkAllowed` also end it.
   bool tJunctionMode = false;
+  /// Border mode: the path ends at the border or at the first sink `sinkAllowed` allows,
+  /// whichever is nearest, crossing barriers orthogonally on the way (never tangentially).
+  /// One path at most; ignored in t-junction mode.
+  bool borderEnds = false;
   /// Per port: 1 if its sink may end a path (empty: all). The source's own sink never does.
   std::vector<char> sinkAllowed;
 };

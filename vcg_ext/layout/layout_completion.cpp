@@ -1,0 +1,181 @@
+#include "layout/layout_completion.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+
+namespace fcql {
+namespace {
+
+/// A set of separatrices to free, from one path between two dangling ports.
+struct FreeingOption {
+  std::vector<int> separatrices;  ///< indices into layout.separatrices, increasing
+  double length = 0;              ///< the path's length γ
+  int from = -1, to = -1;         ///< the dangling ports it joins
+};
+
+/// At most this many separatrices are freed for one path: more would rebuild a large part of
+/// the layout for one pair of ports.
+constexpr std::size_t kMaxFreed = 16;
+
+std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout) {
+  const std::vector<char> used = usedPorts(graph, layout);
+  std::vector<int> dangling;
+  for (int p = 0; p < int(used.size()); ++p)
+    if (!used[p]) dangling.push_back(p);
+  return dangling;
+}
+
+/// Per dangling port, its paths to the other dangling ports with no barrier in the way, and
+/// what each would have to free. `reasons`, if given, gets for each dangling port why no
+/// separatrix joins it yet.
+std::vector<FreeingOption> freeingOptions(const GeodesicGraph& graph, const Layout& layout,
+                                          const std::vector<int>& dangling,
+                                          std::map<int, std::string>* reasons = nullptr) {
+  std::vector<char> sinks(graph.ports().size(), 0);
+  for (int p : dangling) sinks[p] = 1;
+  SearchOptions search;
+  search.maxSinks = graph.parameters().k;
+  search.sinkAllowed = sinks;
+  const auto searches = traceFromPorts(graph, dangling, search);
+  const BarrierSet barriers = layoutBarriers(graph, layout);
+  std::vector<FreeingOption> options;
+  for (std::size_t i = 0; i < searches.size(); ++i) {
+    std::size_t fewest = std::numeric_limits<std::size_t>::max();
+    int paths = 0;
+    for (const TracedPath& path : searches[i]) {
+      if (path.end != TracedPath::Sink || path.sinkPort == dangling[i]) continue;
+      ++paths;
+      std::vector<int> blockers = tangentialBlockers(path, barriers);
+      fewest = std::min(fewest, blockers.size());
+      // No blocker: the pair was reachable and the cycle chose otherwise; freeing nothing
+      // changes nothing.
+      if (blockers.empty() || blockers.size() > kMaxFreed) continue;
+      options.push_back({std::move(blockers), path.length, dangling[i], path.sinkPort});
+    }
+    if (!reasons) continue;
+    std::string& why = (*reasons)[dangling[i]];
+    if (paths == 0)
+      why = "no other dangling port can be reached from it by a field-coherent path, even across the layout";
+    else if (fewest == 0)
+      why = "a path to another dangling port is free, but it crosses the other new candidates tangentially";
+    else if (fewest > kMaxFreed)
+      why = "every path to another dangling port runs along " + std::to_string(fewest) +
+            " or more separatrices (tangentially), more than are freed for one port (" + std::to_string(kMaxFreed) + ")";
+    else
+      why = "every path to another dangling port runs along at least " + std::to_string(fewest) +
+            " separatrices (tangentially), and matching their ports again left no fewer t-junctions";
+  }
+  std::sort(options.begin(), options.end(), [](const FreeingOption& a, const FreeingOption& b) {
+    if (a.separatrices.size() != b.separatrices.size()) return a.separatrices.size() < b.separatrices.size();
+    if (a.length != b.length) return a.length < b.length;
+    return a.separatrices < b.separatrices;
+  });
+  // The same set reached by several paths is tried once (the shortest path's place).
+  std::vector<FreeingOption> distinct;
+  std::set<std::vector<int>> seen;
+  for (auto& o : options)
+    if (seen.insert(o.separatrices).second) distinct.push_back(std::move(o));
+  return distinct;
+}
+
+}  // namespace
+
+std::vector<int> tangentialBlockers(const TracedPath& path, const BarrierSet& barriers) {
+  std::vector<int> ids;
+  for (const PathSegment& s : path.segments)
+    for (const auto& c : barriers.inFace(s.face)) {
+      if ((s.direction - c.direction) % 2 != 0) continue;  // orthogonal: allowed
+      if (relateChords(s.from, s.to, c.from, c.to) == ChordRelation::Disjoint) continue;
+      ids.push_back(c.id);
+    }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+int propagationDefects(const GeodesicGraph& graph, const Layout& layout) {
+  Layout propagated = layout;
+  propagateDanglingPorts(graph, propagated);
+  return propagated.tJunctions + int(propagated.unresolvedPorts.size());
+}
+
+namespace {
+
+/// A separatrix by its two ports: what stays the same while others are freed and added.
+std::pair<int, int> portsOf(const LayoutSeparatrix& s) { return {std::min(s.portA, s.portB), std::max(s.portA, s.portB)}; }
+
+/// The indices in `layout` of the separatrices with the given ports, increasing; empty if one
+/// of them is gone.
+std::vector<int> findSeparatrices(const Layout& layout, const std::vector<std::pair<int, int>>& ports) {
+  std::vector<int> found;
+  for (const auto& wanted : ports) {
+    int index = -1;
+    for (int i = 0; i < int(layout.separatrices.size()) && index < 0; ++i)
+      if (portsOf(layout.separatrices[i]) == wanted) index = i;
+    if (index < 0) return {};
+    found.push_back(index);
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+}  // namespace
+
+CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params) {
+  CompletionReport report;
+  int current = propagationDefects(graph, layout);
+  report.tJunctionsBefore = current;
+  // Passes over the options found for the dangling ports: each option names its separatrices
+  // by their ports, so that it still applies after other trials were kept. A pass that kept a
+  // trial is followed by another, with the options found anew.
+  while (current > 0 && report.trials < params.completionTrials) {
+    const std::vector<int> dangling = danglingPorts(graph, layout);
+    if (dangling.size() < 2) break;
+    std::vector<std::pair<std::vector<std::pair<int, int>>, FreeingOption>> options;
+    report.reasons.clear();
+    for (FreeingOption& o : freeingOptions(graph, layout, dangling, &report.reasons)) {
+      std::vector<std::pair<int, int>> ports;
+      for (int i : o.separatrices) ports.push_back(portsOf(layout.separatrices[i]));
+      options.push_back({std::move(ports), std::move(o)});
+    }
+    bool improved = false;
+    for (const auto& [freedPorts, option] : options) {
+      if (report.trials >= params.completionTrials || current == 0) break;
+      const std::vector<char> used = usedPorts(graph, layout);
+      if (used[option.from] || used[option.to]) continue;  // joined by a trial kept before
+      const std::vector<int> freed = findSeparatrices(layout, freedPorts);
+      if (freed.empty()) continue;  // replaced by a trial kept before
+      ++report.trials;
+      // Only the ports this frees and the two it is for are searched from (the other dangling
+      // ports' searches would find what they found before); every free port is a sink.
+      Layout trial = layout;
+      std::vector<char> sources(graph.ports().size(), 0);
+      sources[option.from] = sources[option.to] = 1;
+      for (const auto& [a, b] : freedPorts) {
+        if (a >= 0) sources[a] = 1;
+        if (b >= 0) sources[b] = 1;
+      }
+      for (auto it = freed.rbegin(); it != freed.rend(); ++it) trial.separatrices.erase(trial.separatrices.begin() + *it);
+      runSolvingCycle(graph, trial, params, SelectionWeights::CoverageFirst, &sources);
+      const int defects = propagationDefects(graph, trial);
+      if (defects < current) {
+        report.freedSeparatrices += int(freed.size());
+        ++report.accepted;
+        layout = std::move(trial);
+        current = defects;
+        improved = true;
+      }
+    }
+    if (!improved) break;
+  }
+  report.tJunctionsAfter = current;
+  if (report.trials >= params.completionTrials && current > 0)
+    for (auto& [port, why] : report.reasons)
+      why += " (the completion's " + std::to_string(params.completionTrials) + " trials were used up: --completion-trials)";
+  return report;
+}
+
+}  // namespace fcql
