@@ -636,7 +636,7 @@ and 8 OpenMP threads (fertility at 447K faces).
 
 The separatrix selection is a set packing: maximise Σ w·x over 0-1 variables with at most one
 variable per row (a port's candidates, Eq. 2; a triangle's conflict clique, Eq. 3). Each
-independent part is now solved in three steps (`layout/set_packing`), all with lp_solve:
+independent part is now solved in three steps (`solver/set_packing`), all with lp_solve:
 1. The LP relaxation with its rows added as they are violated and its variables as they
    price in. It starts from the variables of a greedy selection and no row; each round, lp_solve
    solves again from its last basis and then either the violated rows enter, most violated

@@ -3,6 +3,7 @@
 #include "field/field_generation.h"
 #include "mesh/mesh_io.h"
 #include "test_support.h"
+#include "util/math_constants.h"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +17,6 @@
 using namespace fcql;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Distance of an angle to the nearest multiple of 90°.
 double offQuarter(double angle) { return std::abs(std::remainder(angle, kPi / 2)); }

@@ -1,6 +1,6 @@
 #include "layout/patch_layout.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #include "layout/separatrix_selection.h"
 
 #include "layout/independent_set_reduction.h"
-#include "layout/set_packing.h"
-#include "mesh/union_find.h"
+#include "solver/set_packing.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <chrono>

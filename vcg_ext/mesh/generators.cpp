@@ -1,5 +1,7 @@
 #include "mesh/generators.h"
 
+#include "util/math_constants.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,8 +11,6 @@
 
 namespace fcql {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// A grid of (nu+1)×(nv+1) points over [0,1]², closed in u and/or v by identifying the last
 /// column/row with the first; each quad split along its shorter diagonal.

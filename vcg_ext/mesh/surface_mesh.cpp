@@ -1,6 +1,6 @@
 #include "mesh/surface_mesh.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,6 +2,7 @@
 
 #include "quadrangulation/patch_map.h"
 #include "quadrangulation/patch_sampling.h"
+#include "util/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,6 @@
 
 namespace fcql {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double polylineLength(const std::vector<Vec3>& p) {
   double l = 0;

@@ -18,7 +18,7 @@
 //     2's selection) or the time runs out (a safety stop). The better selection is kept.
 #pragma once
 
-#include "layout/integer_program.h"
+#include "solver/integer_program.h"
 
 #include <string>
 #include <vector>
