@@ -57,12 +57,10 @@ std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
   return used;
 }
 
-Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params) {
-  params.validate();
-  Layout layout;
-  const int numPorts = int(graph.ports().size());
+namespace {
 
-  // 1. The first 0-1 program on all candidates.
+/// Step 1: the first 0-1 program on all candidates.
+void selectFirst(const SeparatrixGraph& candidates, const LayoutParameters& params, Layout& layout) {
   SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStallNodes);
   noteSelection(layout, first);
   for (int a : first.selected) {
@@ -70,47 +68,146 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, 1, c.path});
   }
   layout.selectedFromCandidates = int(first.selected.size());
+}
+
+/// One round of the solving cycle: traces again from the dangling ports, with the layout's
+/// separatrices as barriers, and selects among the new candidates. False when the cycle is
+/// over (fewer than two free ports, nothing to search, no candidate or none selected).
+bool cycleRound(const GeodesicGraph& graph, const LayoutParameters& params, int iteration, SinksOutOfReach& outOfReach,
+                Layout& layout) {
+  const int numPorts = int(graph.ports().size());
+  std::vector<char> used = usedPorts(graph, layout);
+  std::vector<int> dangling;
+  std::vector<char> free(numPorts, 0);
+  for (int p = 0; p < numPorts; ++p)
+    if (!used[p]) dangling.push_back(p), free[p] = 1;
+  if (dangling.size() < 2) return false;  // a separatrix needs two free ports
+  auto start = Clock::now();
+  BarrierSet barriers = barriersOf(graph, layout);
+  std::vector<int> sources;
+  std::vector<SearchOptions> options;
+  for (int p : dangling) {
+    SearchOptions o;
+    o.maxSinks = graph.parameters().k;
+    o.barriers = &barriers;
+    o.sinkAllowed = outOfReach.allowedFrom(p, free);
+    if (std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1) == 0) continue;
+    sources.push_back(p);
+    options.push_back(std::move(o));
+  }
+  if (sources.empty()) return false;
+  auto searches = traceFromPorts(graph, sources, options);
+  for (std::size_t i = 0; i < searches.size(); ++i)
+    outOfReach.note(sources[i], options[i].sinkAllowed, options[i].maxSinks, searches[i]);
+  SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
+  layout.cycleTracingSeconds += since(start);
+  if (more.arcs.empty()) return false;
+  SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStallNodes);
+  noteSelection(layout, r);
+  if (r.selected.empty()) return false;
+  for (int a : r.selected) {
+    const auto& c = more.arcs[a];
+    layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, iteration, c.path});
+  }
+  return true;
+}
+
+/// Accepts propagated paths, shortest first: at most one per port and none meeting a path
+/// accepted before it in this round. Returns how many were accepted.
+int acceptPropagated(std::vector<const TracedPath*> found, int numPorts, Layout& layout) {
+  std::sort(found.begin(), found.end(), [](const TracedPath* a, const TracedPath* b) {
+    return a->length != b->length ? a->length < b->length : a->sourcePort < b->sourcePort;
+  });
+  std::vector<const TracedPath*> accepted;
+  std::vector<char> takenThisRound(numPorts, 0);
+  for (const TracedPath* p : found) {
+    if (takenThisRound[p->sourcePort]) continue;
+    if (p->end == TracedPath::Sink && takenThisRound[p->sinkPort]) continue;
+    bool meets = false;
+    for (const TracedPath* q : accepted) meets = meets || pathsMeet(*p, *q);
+    if (meets) continue;
+    accepted.push_back(p);
+    takenThisRound[p->sourcePort] = 1;
+    LayoutSeparatrix s;
+    s.portA = p->sourcePort;
+    s.path = *p;
+    s.iteration = 0;
+    if (p->end == TracedPath::Sink) {
+      s.kind = LayoutSeparatrix::Full;
+      s.portB = p->sinkPort;
+      takenThisRound[p->sinkPort] = 1;
+    } else if (p->end == TracedPath::Barrier) {
+      s.kind = LayoutSeparatrix::TJunction;
+      ++layout.tJunctions;
+    } else {
+      s.kind = LayoutSeparatrix::Border;
+      ++layout.borderConnections;
+    }
+    layout.separatrices.push_back(std::move(s));
+  }
+  return int(accepted.size());
+}
+
+/// One round of propagation: from each port still dangling (and not failed before), the
+/// shortest path to a free port, a separatrix (t-junction) or the border; ports with none
+/// are marked failed. False when no port is left or no path was accepted.
+bool propagationRound(const GeodesicGraph& graph, std::vector<char>& failed, Layout& layout) {
+  const int numPorts = int(graph.ports().size());
+  std::vector<char> used = usedPorts(graph, layout);
+  std::vector<int> dangling;
+  std::vector<char> free(numPorts, 0);
+  for (int p = 0; p < numPorts; ++p)
+    if (!used[p] && !failed[p]) dangling.push_back(p);
+  for (int p = 0; p < numPorts; ++p) free[p] = !used[p];
+  if (dangling.empty()) return false;
+  BarrierSet barriers = barriersOf(graph, layout);
+  SearchOptions options;
+  options.maxSinks = 1;
+  options.barriers = &barriers;
+  options.tJunctionMode = true;
+  options.sinkAllowed = free;
+  auto results = traceFromPorts(graph, dangling, options);
+  std::vector<const TracedPath*> found;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    // The own sink is excluded by sinkAllowed only if the port is not free: drop it here.
+    const TracedPath* best = nullptr;
+    for (const auto& p : results[i])
+      if (p.sinkPort != dangling[i]) best = &p;
+    if (best) found.push_back(best);
+    else failed[dangling[i]] = 1;
+  }
+  return acceptPropagated(std::move(found), numPorts, layout) > 0;
+}
+
+/// After propagation: the ports left unresolved, and the dead ends removed.
+void finishPropagation(const GeodesicGraph& graph, const std::vector<char>& failed, Layout& layout) {
+  for (int p = 0; p < int(failed.size()); ++p)
+    if (failed[p]) layout.unresolvedPorts.push_back(p);
+  layout.deadEndsRemoved = removeDeadEnds(graph, layout);
+  if (layout.deadEndsRemoved > 0)
+    layout.messages.push_back(std::to_string(layout.deadEndsRemoved) +
+                              " separatrices removed: they ended at a singularity no other separatrix reaches "
+                              "(its other ports unresolved, or a singularity of index 3/4 with a single port), "
+                              "which would leave a slit inside a patch");
+}
+
+}  // namespace
+
+Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates, const LayoutParameters& params) {
+  params.validate();
+  Layout layout;
+  const int numPorts = int(graph.ports().size());
+
+  // 1. The first 0-1 program on all candidates.
+  selectFirst(candidates, params, layout);
 
   // 2. The solving cycle. A search that ran out of graph before finding as many sinks as it
   // was allowed proves the sinks it did not find out of reach of its port, and they stay out
   // of reach in later rounds: the barriers only grow. Later searches leave them out, so they
   // stop once the sinks still in reach are found, and a port with none left is not searched.
   SinksOutOfReach outOfReach(numPorts);
-  for (int iteration = 2; iteration <= params.maxIterations; ++iteration) {
-    std::vector<char> used = usedPorts(graph, layout);
-    std::vector<int> dangling;
-    std::vector<char> free(numPorts, 0);
-    for (int p = 0; p < numPorts; ++p)
-      if (!used[p]) dangling.push_back(p), free[p] = 1;
-    if (dangling.size() < 2) break;  // a separatrix needs two free ports
-    auto start = Clock::now();
-    BarrierSet barriers = barriersOf(graph, layout);
-    std::vector<int> sources;
-    std::vector<SearchOptions> options;
-    for (int p : dangling) {
-      SearchOptions o;
-      o.maxSinks = graph.parameters().k;
-      o.barriers = &barriers;
-      o.sinkAllowed = outOfReach.allowedFrom(p, free);
-      if (std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1) == 0) continue;
-      sources.push_back(p);
-      options.push_back(std::move(o));
-    }
-    if (sources.empty()) break;
-    auto searches = traceFromPorts(graph, sources, options);
-    for (std::size_t i = 0; i < searches.size(); ++i)
-      outOfReach.note(sources[i], options[i].sinkAllowed, options[i].maxSinks, searches[i]);
-    SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
-    layout.cycleTracingSeconds += since(start);
-    if (more.arcs.empty()) break;
-    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStallNodes);
-    noteSelection(layout, r);
-    if (r.selected.empty()) break;
-    for (int a : r.selected) {
-      const auto& c = more.arcs[a];
-      layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, iteration, c.path});
-    }
-  }
+  for (int iteration = 2; iteration <= params.maxIterations; ++iteration)
+    if (!cycleRound(graph, params, iteration, outOfReach, layout)) break;
   {
     std::vector<char> used = usedPorts(graph, layout);
     layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
@@ -120,70 +217,9 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   // 3. Propagation from the ports still dangling.
   auto start = Clock::now();
   std::vector<char> failed(numPorts, 0);
-  for (;;) {
-    std::vector<char> used = usedPorts(graph, layout);
-    std::vector<int> dangling;
-    std::vector<char> free(numPorts, 0);
-    for (int p = 0; p < numPorts; ++p)
-      if (!used[p] && !failed[p]) dangling.push_back(p);
-    for (int p = 0; p < numPorts; ++p) free[p] = !used[p];
-    if (dangling.empty()) break;
-    BarrierSet barriers = barriersOf(graph, layout);
-    SearchOptions options;
-    options.maxSinks = 1;
-    options.barriers = &barriers;
-    options.tJunctionMode = true;
-    options.sinkAllowed = free;
-    auto results = traceFromPorts(graph, dangling, options);
-    std::vector<const TracedPath*> found;
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      // The own sink is excluded by sinkAllowed only if the port is not free: drop it here.
-      const TracedPath* best = nullptr;
-      for (const auto& p : results[i])
-        if (p.sinkPort != dangling[i]) best = &p;
-      if (best) found.push_back(best);
-      else failed[dangling[i]] = 1;
-    }
-    std::sort(found.begin(), found.end(), [](const TracedPath* a, const TracedPath* b) {
-      return a->length != b->length ? a->length < b->length : a->sourcePort < b->sourcePort;
-    });
-    std::vector<const TracedPath*> accepted;
-    std::vector<char> takenThisRound(numPorts, 0);
-    for (const TracedPath* p : found) {
-      if (takenThisRound[p->sourcePort]) continue;
-      if (p->end == TracedPath::Sink && takenThisRound[p->sinkPort]) continue;
-      bool meets = false;
-      for (const TracedPath* q : accepted) meets = meets || pathsMeet(*p, *q);
-      if (meets) continue;
-      accepted.push_back(p);
-      takenThisRound[p->sourcePort] = 1;
-      LayoutSeparatrix s;
-      s.portA = p->sourcePort;
-      s.path = *p;
-      s.iteration = 0;
-      if (p->end == TracedPath::Sink) {
-        s.kind = LayoutSeparatrix::Full;
-        s.portB = p->sinkPort;
-        takenThisRound[p->sinkPort] = 1;
-      } else if (p->end == TracedPath::Barrier) {
-        s.kind = LayoutSeparatrix::TJunction;
-        ++layout.tJunctions;
-      } else {
-        s.kind = LayoutSeparatrix::Border;
-        ++layout.borderConnections;
-      }
-      layout.separatrices.push_back(std::move(s));
-    }
-    if (accepted.empty()) break;
+  while (propagationRound(graph, failed, layout)) {
   }
-  for (int p = 0; p < numPorts; ++p)
-    if (failed[p]) layout.unresolvedPorts.push_back(p);
-  layout.deadEndsRemoved = removeDeadEnds(graph, layout);
-  if (layout.deadEndsRemoved > 0)
-    layout.messages.push_back(std::to_string(layout.deadEndsRemoved) +
-                              " separatrices removed: they ended at a singularity no other separatrix reaches "
-                              "(its other ports unresolved, or a singularity of index 3/4 with a single port), "
-                              "which would leave a slit inside a patch");
+  finishPropagation(graph, failed, layout);
   layout.propagationSeconds = since(start);
   return layout;
 }
