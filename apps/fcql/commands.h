@@ -7,7 +7,7 @@
 #include "mesh/surface_mesh.h"
 #include "stats_json.h"
 #include "layout/patch_layout.h"
-#include "quadrangulation/quad_mesh.h"
+#include "mesh/quad_mesh.h"
 #include "quadrangulation/side_lengths.h"
 #include "tracing/separatrix_graph.h"
 

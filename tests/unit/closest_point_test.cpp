@@ -1,5 +1,5 @@
 #include "mesh/generators.h"
-#include "metrics/closest_point_index.h"
+#include "mesh/closest_point_index.h"
 
 #include <gtest/gtest.h>
 

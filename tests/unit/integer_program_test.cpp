@@ -1,4 +1,4 @@
-#include "layout/integer_program.h"
+#include "solver/integer_program.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "mesh/generators.h"
 #include "mesh/mesh_io.h"
-#include "mesh/number_text.h"
+#include "util/number_text.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,7 @@
 #include "metrics/quad_quality.h"
 
+#include "util/math_constants.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,8 +9,6 @@
 using namespace fcql;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The unit square in the plane z = 0 as 2·n² triangles, with the field along x.
 struct FlatSquare {

@@ -1,4 +1,4 @@
-#include "tracing/radix_heap.h"
+#include "util/radix_heap.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "layout/set_packing.h"
+#include "solver/set_packing.h"
 
 #include <gtest/gtest.h>
 

@@ -6,6 +6,7 @@
 #include "tracing/edge_sampling.h"
 #include "test_support.h"
 #include "tracing/separatrix_graph.h"
+#include "util/math_constants.h"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +21,6 @@
 using namespace fcql;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Traced {
   SurfaceMesh mesh;

@@ -1,5 +1,7 @@
 #include "field/field_analysis.h"
 
+#include "util/math_constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -7,7 +9,6 @@
 namespace fcql {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kQuarter = kPi / 2;
 
 /// x minus the nearest multiple of π/2: the smallest turn between two directions of crosses.

@@ -45,6 +45,7 @@
 #include "field/field_generation.h"
 
 #include "field/curvature.h"
+#include "util/math_constants.h"
 
 #include <Eigen/Sparse>
 #include <Eigen/CholmodSupport>
@@ -61,7 +62,6 @@ namespace {
 
 using Complex = std::complex<double>;
 using SparseMatrixC = Eigen::SparseMatrix<Complex>;  // lower triangles of Hermitian matrices
-constexpr double kPi = 3.14159265358979323846;
 
 /// Default of FieldGenerationOptions::curvatureWeight (λ above).
 constexpr double kDefaultCurvatureWeight = 200.0;

@@ -1,7 +1,7 @@
 #include "field/field_io.h"
 
 #include "mesh/input_file.h"
-#include "mesh/number_text.h"
+#include "util/number_text.h"
 
 #include <cerrno>
 #include <cmath>

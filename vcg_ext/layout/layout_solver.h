@@ -35,9 +35,8 @@ struct LayoutParameters {
   /// Branch and bound stops once this many of its nodes brought no better solution (0: only
   /// the time limit stops it). Counted in nodes, not seconds, so that the same input gives the
   /// same layout on any machine. See IntegerProgram::setStallNodes and solveSetPacking: on
-  /// the selection it starts from the relaxation fixed by parts, within 1% of the LP bound;
-  /// the shared meshes and a parameter sweep settle every 0-1 program before it, except the
-  /// dragon's first (33 nodes in the second it took on the project's machine).
+  /// the selection it starts from the relaxation fixed by parts, within 1% of the LP bound
+  /// (bench/RESULTS.md has the measurements on the shared meshes).
   long ilpStallNodes = 50;
   int maxIterations = 20;    ///< bound on the solving cycle
   /// Step 2b tries at most this many sets of separatrices to free (each a solving cycle on the

@@ -1,6 +1,6 @@
 #include "layout/patch_layout.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <cmath>
@@ -302,13 +302,16 @@ std::vector<std::pair<int, int>> PatchLayout::cornerHistogram() const {
   return {h.begin(), h.end()};
 }
 
-PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
+namespace {
+
+using HalfEdgeIndex = std::unordered_map<std::uint64_t, int>;  // (a, b) -> t*3+i
+
+/// Step 1: the triangles of the layout. Faces no separatrix touches are copied; the others are
+/// cut along the separatrices through them (FaceArrangement), with the auxiliary points the
+/// separatrices pass through as new vertices.
+void arrangeFaces(const GeodesicGraph& graph, const Layout& layout, PatchLayout& out) {
   const SurfaceMesh& mesh = graph.mesh();
   const EdgeSampling& es = graph.sampling();
-  PatchLayout out;
-  out.numOriginalVertices = mesh.numVertices();
-  out.positions = mesh.positions();
-
   // Global ids of the auxiliary points the separatrices pass through.
   std::unordered_map<int, int> sampleVertex;
   std::vector<std::vector<int>> samplesOfEdge(mesh.numEdges());
@@ -356,10 +359,13 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     }
     arr.triangulate(out.triangles, out.edgeCurve, out.edgeParam, out.originalFace);
   }
+}
 
-  // Patches: components across edges that are not on a separatrix or the border.
+/// Step 2: patches, the components across edges that are not on a separatrix or the border
+/// (out.patch, out.patches sized). Returns the half-edges of the triangles.
+HalfEdgeIndex labelPatches(PatchLayout& out) {
   const int nt = int(out.triangles.size());
-  std::unordered_map<std::uint64_t, int> halfEdge;  // (a, b) -> t*3+i
+  HalfEdgeIndex halfEdge;
   halfEdge.reserve(std::size_t(nt) * 3);
   for (int t = 0; t < nt; ++t)
     for (int i = 0; i < 3; ++i) halfEdge[key(out.triangles[t][i], out.triangles[t][(i + 1) % 3])] = t * 3 + i;
@@ -386,21 +392,39 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     auto ins = patchOfRoot.emplace(uf.find(t), int(patchOfRoot.size()));
     out.patch[t] = ins.first->second;
   }
-  const int np = int(patchOfRoot.size());
-  out.patches.assign(np, {});
+  out.patches.assign(patchOfRoot.size(), {});
+  return halfEdge;
+}
 
-  // Vertices that are corners whenever a patch boundary passes through them.
-  const auto& index = graph.analysis().vertexIndexQuarters;
-  auto alwaysCorner = [&](int v) { return v < mesh.numVertices() && index[v] != 0; };
-  // A field line that closes on itself through a regular (virtual) anchor runs straight on
-  // through it: its parameter wraps from the last segment back to 0 there.
-  std::vector<int> closedLoopLength(layout.separatrices.size(), -1);
-  for (int i = 0; i < int(layout.separatrices.size()); ++i) {
-    const auto& s = layout.separatrices[i];
-    if (s.portA < 0 || s.portB < 0) continue;
-    int va = graph.ports()[s.portA].vertex, vb = graph.ports()[s.portB].vertex;
-    if (va == vb && index[va] == 0) closedLoopLength[i] = int(s.path.segments.size());
+/// Which boundary vertices are corners of a patch: where its boundary changes separatrix (or
+/// jumps along the same one), and at singular vertices, unless it runs straight on there.
+class CornerRule {
+public:
+  CornerRule(const GeodesicGraph& graph, const Layout& layout)
+      : graph_(graph), layout_(layout), mesh_(graph.mesh()), index_(graph.analysis().vertexIndexQuarters) {
+    // A field line that closes on itself through a regular (virtual) anchor runs straight on
+    // through it: its parameter wraps from the last segment back to 0 there.
+    closedLoopLength_.assign(layout.separatrices.size(), -1);
+    for (int i = 0; i < int(layout.separatrices.size()); ++i) {
+      const auto& s = layout.separatrices[i];
+      if (s.portA < 0 || s.portB < 0) continue;
+      int va = graph.ports()[s.portA].vertex, vb = graph.ports()[s.portB].vertex;
+      if (va == vb && index_[va] == 0) closedLoopLength_[i] = int(s.path.segments.size());
+    }
   }
+
+  /// Is b a corner where the boundary arrives along curve c1 (parameter p1 at b) and leaves
+  /// along c2 (parameter p2)?
+  bool isCorner(int b, int c1, double p1, int c2, double p2) const {
+    // Same separatrix on both sides of b, but is it the same stretch of it?
+    bool jump = c1 >= 0 && c1 == c2 && std::abs(p1 - p2) > 1e-6;
+    if (jump && closedLoopLength_[c1] > 0 && std::abs(std::abs(p1 - p2) - closedLoopLength_[c1]) < 1e-6) jump = false;
+    return (c1 != c2 || jump || alwaysCorner(b)) && !straightThroughSingularity(b, c1, p1, c2, p2);
+  }
+
+private:
+  /// Vertices that are corners whenever a patch boundary passes through them.
+  bool alwaysCorner(int v) const { return v < mesh_.numVertices() && index_[v] != 0; }
 
   // At an interior singular vertex the patch's wedge lies between the separatrix the boundary
   // leaves by and the one it arrives by, both ending there: it spans as many of the vertex's
@@ -408,27 +432,64 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
   // left) to the second. Two steps mean a port between them that no separatrix leaves (an
   // unresolved port): the boundary runs straight on through the vertex, which is no corner of
   // this patch (it is one of the patches beyond the two separatrices).
-  auto portEndingAt = [&](int c, double param, int v) {
+  int portEndingAt(int c, double param, int v) const {
     if (c < 0) return -1;
-    const LayoutSeparatrix& s = layout.separatrices[c];
-    if (std::abs(param) < 1e-6 && s.portA >= 0 && graph.ports()[s.portA].vertex == v) return s.portA;
-    if (std::abs(param - double(s.path.segments.size())) < 1e-6 && s.portB >= 0 && graph.ports()[s.portB].vertex == v)
+    const LayoutSeparatrix& s = layout_.separatrices[c];
+    if (std::abs(param) < 1e-6 && s.portA >= 0 && graph_.ports()[s.portA].vertex == v) return s.portA;
+    if (std::abs(param - double(s.path.segments.size())) < 1e-6 && s.portB >= 0 && graph_.ports()[s.portB].vertex == v)
       return s.portB;
     return -1;
-  };
-  auto straightThroughSingularity = [&](int v, int arriving, double arrivingParam, int leaving, double leavingParam) {
-    if (v >= mesh.numVertices() || index[v] == 0) return false;
+  }
+  bool straightThroughSingularity(int v, int arriving, double arrivingParam, int leaving, double leavingParam) const {
+    if (v >= mesh_.numVertices() || index_[v] == 0) return false;
     const int in = portEndingAt(arriving, arrivingParam, v), out = portEndingAt(leaving, leavingParam, v);
     if (in < 0 || out < 0) return false;
-    const PortNode &a = graph.ports()[in], &b = graph.ports()[out];
-    const SingularVertex& sv = graph.analysis().singularities[a.singularity];
+    const PortNode &a = graph_.ports()[in], &b = graph_.ports()[out];
+    const SingularVertex& sv = graph_.analysis().singularities[a.singularity];
     if (sv.onBorder || a.singularity != b.singularity) return false;
     const int m = int(sv.ports.size());
     return ((a.portIndex - b.portIndex) % m + m) % m == 2;
-  };
+  }
 
-  // Walk boundary loops. From boundary half-edge (a→b) in triangle t, rotate about b through
-  // the patch (across edges inside it) to the next boundary half-edge leaving b.
+  const GeodesicGraph& graph_;
+  const Layout& layout_;
+  const SurfaceMesh& mesh_;
+  const std::vector<int>& index_;
+  std::vector<int> closedLoopLength_;
+};
+
+/// Per patch, what its Euler characteristic needs besides the boundary walk.
+struct PatchTally {
+  std::vector<long> interiorHalfEdges;
+  std::vector<std::vector<int>> vertices;
+  std::vector<std::unordered_map<int, char>> onBoundary;  ///< filled by walkBoundaries
+};
+
+/// Counts each patch's triangles (in out.patches) and interior half-edges, and lists its vertices.
+PatchTally tallyPatches(PatchLayout& out) {
+  const int nt = int(out.triangles.size()), np = int(out.patches.size());
+  PatchTally tally;
+  tally.interiorHalfEdges.assign(np, 0);
+  tally.vertices.resize(np);
+  tally.onBoundary.resize(np);
+  for (int t = 0; t < nt; ++t) {
+    int p = out.patch[t];
+    out.patches[p].triangles += 1;
+    for (int i = 0; i < 3; ++i) {
+      tally.vertices[p].push_back(out.triangles[t][i]);
+      if (out.edgeCurve[t][i] == -1) tally.interiorHalfEdges[p] += 1;
+    }
+  }
+  return tally;
+}
+
+/// Step 3: walks the boundary loops of every patch, counting loops and corners, marking the
+/// corners (out.corner) and recording each patch's first loop with its corners.
+void walkBoundaries(const HalfEdgeIndex& halfEdge, const CornerRule& corners, PatchLayout& out,
+                    std::vector<std::unordered_map<int, char>>& onBoundary) {
+  const int nt = int(out.triangles.size());
+  // From boundary half-edge (a→b) in triangle t, rotate about b through the patch (across
+  // edges inside it) to the next boundary half-edge leaving b.
   auto isBoundary = [&](int t, int i) { return out.edgeCurve[t][i] != -1; };
   auto nextBoundary = [&](int t, int i) {
     int b = out.triangles[t][(i + 1) % 3];
@@ -443,18 +504,6 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     return -1;
   };
   std::vector<char> visited(std::size_t(nt) * 3, 0);
-  out.corner.assign(out.positions.size(), 0);
-  std::vector<long> interiorHalfEdges(np, 0);
-  std::vector<std::vector<int>> patchVertices(np);
-  std::vector<std::unordered_map<int, char>> onBoundary(np);
-  for (int t = 0; t < nt; ++t) {
-    int p = out.patch[t];
-    out.patches[p].triangles += 1;
-    for (int i = 0; i < 3; ++i) {
-      patchVertices[p].push_back(out.triangles[t][i]);
-      if (!isBoundary(t, i)) interiorHalfEdges[p] += 1;
-    }
-  }
   for (int t = 0; t < nt; ++t)
     for (int i = 0; i < 3; ++i) {
       if (!isBoundary(t, i) || visited[t * 3 + i]) continue;
@@ -476,11 +525,8 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         }
         int b = out.triangles[tt][(ii + 1) % 3];
         int c1 = out.edgeCurve[tt][ii], c2 = out.edgeCurve[next / 3][next % 3];
-        // Same separatrix on both sides of b, but is it the same stretch of it?
         double p1 = out.edgeParam[tt][ii][1], p2 = out.edgeParam[next / 3][next % 3][0];
-        bool jump = c1 >= 0 && c1 == c2 && std::abs(p1 - p2) > 1e-6;
-        if (jump && closedLoopLength[c1] > 0 && std::abs(std::abs(p1 - p2) - closedLoopLength[c1]) < 1e-6) jump = false;
-        bool isCorner = (c1 != c2 || jump || alwaysCorner(b)) && !straightThroughSingularity(b, c1, p1, c2, p2);
+        bool isCorner = corners.isCorner(b, c1, p1, c2, p2);
         if (isCorner) {
           rep.corners += 1;
           out.corner[b] = 1;
@@ -494,15 +540,21 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
         for (std::size_t k = 0; k < m && k < rep.loop.size(); ++k) rep.loopCorner[(k + 1) % rep.loop.size()] = cornerAtEnd[k];
       }
     }
+}
+
+/// Step 4: each patch's Euler characteristic, whether it is a valid 4-sided disk and, if not,
+/// why; disks with fewer than 3 corners get corners added on their boundary.
+void classifyPatches(PatchTally& tally, PatchLayout& out) {
+  const int np = int(out.patches.size());
   for (int p = 0; p < np; ++p) {
-    auto& vs = patchVertices[p];
+    auto& vs = tally.vertices[p];
     std::sort(vs.begin(), vs.end());
     vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
     long interiorVertices = 0;
-    for (int v : vs) interiorVertices += onBoundary[p].count(v) ? 0 : 1;
+    for (int v : vs) interiorVertices += tally.onBoundary[p].count(v) ? 0 : 1;
     PatchReport& rep = out.patches[p];
     // χ of the patch cut open along its boundary (see the header).
-    rep.eulerCharacteristic = int(interiorVertices - interiorHalfEdges[p] / 2 + rep.triangles);
+    rep.eulerCharacteristic = int(interiorVertices - tally.interiorHalfEdges[p] / 2 + rep.triangles);
     rep.isDisk = rep.eulerCharacteristic == 1 && rep.boundaryLoops == 1;
     // A boundary that goes x → v → x runs along a separatrix and straight back: a separatrix
     // ends inside the patch, at v (a slit); no grid fits such a patch.
@@ -521,6 +573,21 @@ PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
     rep.problem = std::to_string(rep.corners - added) + " corners (" + std::to_string(added) +
                   " added on its boundary to cut it as a " + std::to_string(rep.corners) + "-gon)";
   }
+}
+
+}  // namespace
+
+PatchLayout buildPatchLayout(const GeodesicGraph& graph, const Layout& layout) {
+  PatchLayout out;
+  out.numOriginalVertices = graph.mesh().numVertices();
+  out.positions = graph.mesh().positions();
+  arrangeFaces(graph, layout, out);
+  const HalfEdgeIndex halfEdge = labelPatches(out);
+  const CornerRule corners(graph, layout);
+  out.corner.assign(out.positions.size(), 0);
+  PatchTally tally = tallyPatches(out);
+  walkBoundaries(halfEdge, corners, out, tally.onBoundary);
+  classifyPatches(tally, out);
   return out;
 }
 

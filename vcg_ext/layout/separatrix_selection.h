@@ -3,7 +3,7 @@
 // Orthogonality), maximising Σ c_i / γ(s_i) (Eq. 4).
 #pragma once
 
-#include "layout/integer_program.h"
+#include "solver/integer_program.h"
 #include "tracing/separatrix_graph.h"
 
 #include <string>

@@ -1,5 +1,7 @@
 #include "mesh/generators.h"
 
+#include "util/math_constants.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,31 +11,6 @@
 
 namespace fcql {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-/// A grid of (nu+1)×(nv+1) points over [0,1]², closed in u and/or v by identifying the last
-/// column/row with the first; each quad split along its shorter diagonal.
-SurfaceMesh gridSurface(int nu, int nv, bool closedU, bool closedV, const std::function<Vec3(double, double)>& at) {
-  const int cu = closedU ? nu : nu + 1, cv = closedV ? nv : nv + 1;
-  std::vector<Vec3> p;
-  for (int j = 0; j < cv; ++j)
-    for (int i = 0; i < cu; ++i) p.push_back(at(double(i) / nu, double(j) / nv));
-  auto id = [&](int i, int j) { return (j % cv) * cu + (i % cu); };
-  std::vector<std::array<int, 3>> f;
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if ((p[a] - p[c]).norm() <= (p[b] - p[d]).norm()) {
-        f.push_back({a, b, c});
-        f.push_back({a, c, d});
-      } else {
-        f.push_back({a, b, d});
-        f.push_back({b, c, d});
-      }
-    }
-  return SurfaceMesh(p, f);
-}
 
 /// Collects quads and triangles, welding vertices that coincide.
 class MeshBuilder {
@@ -90,6 +67,28 @@ void smooth(std::vector<Vec3>& p, const std::vector<std::array<int, 3>>& faces, 
 
 }  // namespace
 
+SurfaceMesh gridSurface(int nu, int nv, bool closedU, bool closedV, const std::function<Vec3(double, double)>& at,
+                        GridDiagonal diagonal) {
+  const int cu = closedU ? nu : nu + 1, cv = closedV ? nv : nv + 1;
+  std::vector<Vec3> p;
+  for (int j = 0; j < cv; ++j)
+    for (int i = 0; i < cu; ++i) p.push_back(at(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return (j % cv) * cu + (i % cu); };
+  std::vector<std::array<int, 3>> f;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (diagonal == GridDiagonal::Same || (p[a] - p[c]).norm() <= (p[b] - p[d]).norm()) {
+        f.push_back({a, b, c});
+        f.push_back({a, c, d});
+      } else {
+        f.push_back({a, b, d});
+        f.push_back({b, c, d});
+      }
+    }
+  return SurfaceMesh(p, f);
+}
+
 SurfaceMesh makeSphere(int subdivisions) {
   if (subdivisions < 0 || subdivisions > 7) throw MeshError("sphere subdivisions must be between 0 and 7");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
@@ -122,20 +121,26 @@ SurfaceMesh makeSphere(int subdivisions) {
   return SurfaceMesh(p, f);
 }
 
-SurfaceMesh makeTorus(double R, double r, int nu, int nv) {
+SurfaceMesh makeTorus(double R, double r, int nu, int nv, GridDiagonal diagonal) {
   if (!(R > r && r > 0) || nu < 3 || nv < 3) throw MeshError("torus needs R > r > 0 and at least 3 segments each way");
-  return gridSurface(nu, nv, true, true, [&](double s, double t) {
-    double a = 2 * kPi * s, b = 2 * kPi * t;
-    return Vec3((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
-  });
+  return gridSurface(
+      nu, nv, true, true,
+      [&](double s, double t) {
+        double a = 2 * kPi * s, b = 2 * kPi * t;
+        return Vec3((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+      },
+      diagonal);
 }
 
-SurfaceMesh makeOpenCylinder(double radius, double height, int nu, int nv) {
+SurfaceMesh makeOpenCylinder(double radius, double height, int nu, int nv, GridDiagonal diagonal) {
   if (!(radius > 0 && height > 0) || nu < 3 || nv < 1) throw MeshError("cylinder needs positive sizes and at least 3 segments around");
-  return gridSurface(nu, nv, true, false, [&](double s, double t) {
-    double a = 2 * kPi * s;
-    return Vec3(radius * std::cos(a), radius * std::sin(a), height * (t - 0.5));
-  });
+  return gridSurface(
+      nu, nv, true, false,
+      [&](double s, double t) {
+        double a = 2 * kPi * s;
+        return Vec3(radius * std::cos(a), radius * std::sin(a), height * (t - 0.5));
+      },
+      diagonal);
 }
 
 SurfaceMesh makeRoundedBox(Vec3 half, double radius, int resolution) {

@@ -1,7 +1,7 @@
 #include "mesh/mesh_io.h"
 
 #include "mesh/input_file.h"
-#include "mesh/number_text.h"
+#include "util/number_text.h"
 #include "mesh/ply_reader.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "mesh/surface_mesh.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,84 +36,107 @@ void checkCoordinateRange(const std::vector<Vec3>& positions, const std::vector<
                   "; scale it to a size between " + number(kMinExtent) + " and " + number(kMaxExtent) + " units");
 }
 
-}  // namespace
-
-SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int, 3>> faces)
-    : positions_(std::move(positions)), faces_(std::move(faces)) {
-  const int nv = numVertices();
-  const int nf = numFaces();
+/// Step 1: at least one face, finite coordinates, indices in range, no face repeating a
+/// vertex, a size double precision can work with.
+void checkIndicesAndValues(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& faces) {
+  const int nv = int(positions.size());
+  const int nf = int(faces.size());
   if (nf == 0) throw MeshError("the mesh has no faces");
   for (int v = 0; v < nv; ++v)
-    if (!positions_[v].allFinite())
+    if (!positions[v].allFinite())
       throw MeshError("vertex " + std::to_string(v) + " has a non-finite coordinate");
   for (int f = 0; f < nf; ++f) {
     for (int c = 0; c < 3; ++c)
-      if (faces_[f][c] < 0 || faces_[f][c] >= nv)
-        throw MeshError(faceName(f) + " refers to vertex " + std::to_string(faces_[f][c]) +
+      if (faces[f][c] < 0 || faces[f][c] >= nv)
+        throw MeshError(faceName(f) + " refers to vertex " + std::to_string(faces[f][c]) +
                         ", out of range (the mesh has " + std::to_string(nv) + " vertices)");
-    if (faces_[f][0] == faces_[f][1] || faces_[f][1] == faces_[f][2] || faces_[f][0] == faces_[f][2])
+    if (faces[f][0] == faces[f][1] || faces[f][1] == faces[f][2] || faces[f][0] == faces[f][2])
       throw MeshError(faceName(f) + " uses the same vertex twice (degenerate face)");
   }
-  checkCoordinateRange(positions_, faces_);
+  checkCoordinateRange(positions, faces);
+}
 
-  // Geometry per face; a face whose area is negligible against its longest edge is degenerate.
-  normals_.resize(nf);
-  frameX_.resize(nf);
-  areas_.resize(nf);
+/// Step 2: geometry per face; a face whose area is negligible against its longest edge is
+/// degenerate. Returns the sum of the faces' edge lengths.
+double faceGeometry(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& faces,
+                    std::vector<Vec3>& normals, std::vector<Vec3>& frameX, std::vector<double>& areas) {
+  const int nf = int(faces.size());
+  normals.resize(nf);
+  frameX.resize(nf);
+  areas.resize(nf);
   double edgeLengthSum = 0;
   for (int f = 0; f < nf; ++f) {
-    const Vec3& p0 = positions_[faces_[f][0]];
-    const Vec3& p1 = positions_[faces_[f][1]];
-    const Vec3& p2 = positions_[faces_[f][2]];
+    const Vec3& p0 = positions[faces[f][0]];
+    const Vec3& p1 = positions[faces[f][1]];
+    const Vec3& p2 = positions[faces[f][2]];
     Vec3 cross = (p1 - p0).cross(p2 - p0);
     double longest = std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm()});
     double area2 = cross.norm();
     if (!(longest > 0) || !(area2 > 1e-10 * longest * longest))
       throw MeshError(faceName(f) + " is degenerate (zero area: its corners are collinear or coincide)");
-    normals_[f] = cross / area2;
-    areas_[f] = 0.5 * area2;
-    frameX_[f] = (p1 - p0).normalized();
+    normals[f] = cross / area2;
+    areas[f] = 0.5 * area2;
+    frameX[f] = (p1 - p0).normalized();
     edgeLengthSum += (p1 - p0).norm() + (p2 - p1).norm() + (p0 - p2).norm();
   }
+  return edgeLengthSum;
+}
 
-  // Half-edges grouped by their origin vertex (a counting sort, in face order): half-edge
-  // h = 3f + i runs from corner i to corner i+1 of face f. Each vertex's group is also its
-  // list of corners, and the half-edges of an edge are found in the groups of its two ends,
-  // without a hash table (a 1M-face mesh: 2.9M half-edges).
-  std::vector<int> outStart(nv + 1, 0);
-  for (int f = 0; f < nf; ++f)
-    for (int i = 0; i < 3; ++i) ++outStart[faces_[f][i] + 1];
-  for (int v = 0; v < nv; ++v) outStart[v + 1] += outStart[v];
-  std::vector<int> outgoing(std::size_t(nf) * 3);
-  {
-    std::vector<int> fill(outStart.begin(), outStart.end() - 1);
+/// Half-edges grouped by their origin vertex (a counting sort, in face order): half-edge
+/// h = 3f + i runs from corner i to corner i+1 of face f. Each vertex's group is also its
+/// list of corners, and the half-edges of an edge are found in the groups of its two ends,
+/// without a hash table (a 1M-face mesh: 2.9M half-edges).
+class HalfEdgesByOrigin {
+public:
+  HalfEdgesByOrigin(const std::vector<std::array<int, 3>>& faces, int nv) : faces_(faces), start_(nv + 1, 0) {
+    const int nf = int(faces.size());
     for (int f = 0; f < nf; ++f)
-      for (int i = 0; i < 3; ++i) outgoing[fill[faces_[f][i]]++] = f * 3 + i;
+      for (int i = 0; i < 3; ++i) ++start_[faces[f][i] + 1];
+    for (int v = 0; v < nv; ++v) start_[v + 1] += start_[v];
+    outgoing_.resize(std::size_t(nf) * 3);
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    for (int f = 0; f < nf; ++f)
+      for (int i = 0; i < 3; ++i) outgoing_[fill[faces[f][i]]++] = f * 3 + i;
   }
-  auto target = [&](int h) { return faces_[h / 3][(h % 3 + 1) % 3]; };
-  // The half-edge a -> b, the first in face order, or -1.
-  auto findHalfEdge = [&](int a, int b) {
-    for (int k = outStart[a]; k < outStart[a + 1]; ++k)
-      if (target(outgoing[k]) == b) return outgoing[k];
+  /// The half-edges leaving v are outgoing(begin(v)) .. outgoing(end(v) − 1).
+  int begin(int v) const { return start_[v]; }
+  int end(int v) const { return start_[v + 1]; }
+  int outgoing(int k) const { return outgoing_[k]; }
+  /// The half-edge a -> b, the first in face order, or -1.
+  int find(int a, int b) const {
+    for (int k = start_[a]; k < start_[a + 1]; ++k)
+      if (target(outgoing_[k]) == b) return outgoing_[k];
     return -1;
-  };
+  }
+
+private:
+  int target(int h) const { return faces_[h / 3][(h % 3 + 1) % 3]; }
+  const std::vector<std::array<int, 3>>& faces_;
+  std::vector<int> start_;
+  std::vector<int> outgoing_;
+};
+
+/// Step 3: every half-edge is the first of its kind: no edge shared by more than two faces,
+/// no duplicated face, no two faces running an edge the same way.
+void checkEdgeManifold(const std::vector<std::array<int, 3>>& faces, const HalfEdgesByOrigin& halfEdges) {
+  const int nf = int(faces.size());
   for (int f = 0; f < nf; ++f)
     for (int i = 0; i < 3; ++i) {
-      int a = faces_[f][i], b = faces_[f][(i + 1) % 3];
-      const int first = findHalfEdge(a, b);
+      int a = faces[f][i], b = faces[f][(i + 1) % 3];
+      const int first = halfEdges.find(a, b);
       if (first == f * 3 + i) continue;
       // Either three or more faces share the edge, or two faces run it the same way.
       int uses = 0;
       for (int g = 0; g < nf && uses < 3; ++g)
         for (int j = 0; j < 3; ++j) {
-          int c = faces_[g][j], d = faces_[g][(j + 1) % 3];
+          int c = faces[g][j], d = faces[g][(j + 1) % 3];
           if ((c == a && d == b) || (c == b && d == a)) ++uses;
         }
       if (uses > 2)
         throw MeshError("non-manifold edge: the edge between vertices " + std::to_string(a) +
                         " and " + std::to_string(b) + " is shared by more than two faces");
       {
-        std::array<int, 3> x = faces_[first / 3], y = faces_[f];
+        std::array<int, 3> x = faces[first / 3], y = faces[f];
         std::sort(x.begin(), x.end());
         std::sort(y.begin(), y.end());
         if (x == y)
@@ -125,43 +148,56 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
                       " and " + std::to_string(b) + " in the same direction (flipped face or "
                       "non-orientable surface)");
     }
-  adjFace_.assign(nf, {-1, -1, -1});
-  adjEdge_.assign(nf, {-1, -1, -1});
-  edgeId_.assign(nf, {-1, -1, -1});
-  numEdges_ = 0;
+}
+
+/// Step 4: edge ids and the face across each edge (adjFace, adjEdge; −1 on the border).
+/// Returns the number of edges.
+int linkEdges(const std::vector<std::array<int, 3>>& faces, const HalfEdgesByOrigin& halfEdges,
+              std::vector<std::array<int, 3>>& adjFace, std::vector<std::array<int, 3>>& adjEdge,
+              std::vector<std::array<int, 3>>& edgeId) {
+  const int nf = int(faces.size());
+  adjFace.assign(nf, {-1, -1, -1});
+  adjEdge.assign(nf, {-1, -1, -1});
+  edgeId.assign(nf, {-1, -1, -1});
+  int numEdges = 0;
   for (int f = 0; f < nf; ++f)
     for (int i = 0; i < 3; ++i) {
-      if (edgeId_[f][i] >= 0) continue;
-      int a = faces_[f][i], b = faces_[f][(i + 1) % 3];
-      const int twin = findHalfEdge(b, a);
-      edgeId_[f][i] = numEdges_;
+      if (edgeId[f][i] >= 0) continue;
+      int a = faces[f][i], b = faces[f][(i + 1) % 3];
+      const int twin = halfEdges.find(b, a);
+      edgeId[f][i] = numEdges;
       if (twin >= 0) {
         int g = twin / 3, j = twin % 3;
-        adjFace_[f][i] = g;
-        adjEdge_[f][i] = j;
-        adjFace_[g][j] = f;
-        adjEdge_[g][j] = i;
-        edgeId_[g][j] = numEdges_;
+        adjFace[f][i] = g;
+        adjEdge[f][i] = j;
+        adjFace[g][j] = f;
+        adjEdge[g][j] = i;
+        edgeId[g][j] = numEdges;
       }
-      ++numEdges_;
+      ++numEdges;
     }
-  meanEdgeLength_ = edgeLengthSum / (3.0 * nf);
+  return numEdges;
+}
 
-  // Stars: corners of each vertex (its outgoing half-edges, in face order), then ordered
-  // counter-clockwise by walking across the edge that enters the vertex (edge (c+2)%3 of the
-  // current face).
-  stars_.assign(nv, {});
-  borderVertex_.assign(nv, 0);
-  numUsedVertices_ = 0;
+/// Step 5: stars, the corners of each vertex (its outgoing half-edges, in face order), then
+/// ordered counter-clockwise by walking across the edge that enters the vertex (edge (c+2)%3
+/// of the current face); a vertex whose corners form more than one fan is non-manifold.
+/// Returns the number of vertices with a non-empty star.
+int buildStars(int nv, const HalfEdgesByOrigin& halfEdges, const std::vector<std::array<int, 3>>& adjFace,
+               const std::vector<std::array<int, 3>>& adjEdge, std::vector<std::vector<StarCorner>>& stars,
+               std::vector<char>& borderVertex) {
+  stars.assign(nv, {});
+  borderVertex.assign(nv, 0);
+  int numUsedVertices = 0;
   for (int v = 0; v < nv; ++v) {
-    const int begin = outStart[v], count = outStart[v + 1] - begin;
+    const int begin = halfEdges.begin(v), count = halfEdges.end(v) - begin;
     if (count == 0) continue;
-    ++numUsedVertices_;
+    ++numUsedVertices;
     // A border vertex's fan starts at the corner whose outgoing edge (edge c) is on the border.
     int start = 0, borderStarts = 0;
     for (int k = 0; k < count; ++k) {
-      const int h = outgoing[begin + k];
-      if (adjFace_[h / 3][h % 3] < 0) {
+      const int h = halfEdges.outgoing(begin + k);
+      if (adjFace[h / 3][h % 3] < 0) {
         if (borderStarts == 0) start = k;
         ++borderStarts;
       }
@@ -169,16 +205,16 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     if (borderStarts > 1)
       throw MeshError("non-manifold vertex " + std::to_string(v) +
                       ": its faces form several fans touching only at the vertex");
-    borderVertex_[v] = borderStarts == 1;
+    borderVertex[v] = borderStarts == 1;
     std::vector<StarCorner> fan;
     fan.reserve(count);
-    StarCorner cur{outgoing[begin + start] / 3, outgoing[begin + start] % 3};
+    StarCorner cur{halfEdges.outgoing(begin + start) / 3, halfEdges.outgoing(begin + start) % 3};
     for (int step = 0; step <= count; ++step) {
       fan.push_back(cur);
       int entering = (cur.corner + 2) % 3;
-      int g = adjFace_[cur.face][entering];
+      int g = adjFace[cur.face][entering];
       if (g < 0) break;  // reached the border
-      int j = adjEdge_[cur.face][entering];
+      int j = adjEdge[cur.face][entering];
       StarCorner next{g, j};  // in g, edge j runs v -> other, so v is corner j
       if (next.face == fan.front().face) break;  // closed the loop
       cur = next;
@@ -186,52 +222,79 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     if (int(fan.size()) != count)
       throw MeshError("non-manifold vertex " + std::to_string(v) +
                       ": its faces form several fans touching only at the vertex");
-    stars_[v] = std::move(fan);
+    stars[v] = std::move(fan);
   }
-  std::vector<int>().swap(outgoing);
+  return numUsedVertices;
+}
 
-  // Components, border loops, genus.
+struct Topology {
+  int numComponents = 0, numBorderLoops = 0, genus = 0;
+};
+
+/// Step 6: components, border loops, genus.
+Topology topology(const std::vector<std::array<int, 3>>& faces, int nv, const std::vector<std::array<int, 3>>& adjFace,
+                  const std::vector<std::vector<StarCorner>>& stars) {
+  const int nf = int(faces.size());
+  Topology result;
   UnionFind uf(nf);
   for (int f = 0; f < nf; ++f)
     for (int i = 0; i < 3; ++i)
-      if (adjFace_[f][i] >= 0) uf.unite(f, adjFace_[f][i]);
+      if (adjFace[f][i] >= 0) uf.unite(f, adjFace[f][i]);
   // componentOf[root] numbers the components in the order of their first face.
   std::vector<int> componentOf(nf, -1);
-  numComponents_ = 0;
+  int& numComponents = result.numComponents;
   for (int f = 0; f < nf; ++f)
-    if (componentOf[uf.find(f)] < 0) componentOf[uf.find(f)] = numComponents_++;
-  std::vector<long> compV(numComponents_, 0), compE(numComponents_, 0), compF(numComponents_, 0),
-      compLoops(numComponents_, 0);
+    if (componentOf[uf.find(f)] < 0) componentOf[uf.find(f)] = numComponents++;
+  std::vector<long> compV(numComponents, 0), compE(numComponents, 0), compF(numComponents, 0),
+      compLoops(numComponents, 0);
   for (int f = 0; f < nf; ++f) {
     int c = componentOf[uf.find(f)];
     compF[c] += 1;
     for (int i = 0; i < 3; ++i)
-      if (adjFace_[f][i] < 0 || f < adjFace_[f][i]) compE[c] += 1;
+      if (adjFace[f][i] < 0 || f < adjFace[f][i]) compE[c] += 1;
   }
   for (int v = 0; v < nv; ++v)
-    if (!stars_[v].empty()) compV[componentOf[uf.find(stars_[v][0].face)]] += 1;
+    if (!stars[v].empty()) compV[componentOf[uf.find(stars[v][0].face)]] += 1;
   // Border loops: follow border half-edges; each border vertex has exactly one outgoing one.
   std::vector<int> nextBorder(nv, -1);
   std::vector<int> borderFaceOf(nv, -1);
   for (int f = 0; f < nf; ++f)
     for (int i = 0; i < 3; ++i)
-      if (adjFace_[f][i] < 0) {
-        nextBorder[faces_[f][i]] = faces_[f][(i + 1) % 3];
-        borderFaceOf[faces_[f][i]] = f;
+      if (adjFace[f][i] < 0) {
+        nextBorder[faces[f][i]] = faces[f][(i + 1) % 3];
+        borderFaceOf[faces[f][i]] = f;
       }
   std::vector<char> visited(nv, 0);
-  numBorderLoops_ = 0;
   for (int v = 0; v < nv; ++v) {
     if (nextBorder[v] < 0 || visited[v]) continue;
-    ++numBorderLoops_;
+    ++result.numBorderLoops;
     compLoops[componentOf[uf.find(borderFaceOf[v])]] += 1;
     for (int w = v; w >= 0 && !visited[w]; w = nextBorder[w]) visited[w] = 1;
   }
-  genus_ = 0;
-  for (int c = 0; c < numComponents_; ++c) {
+  for (int c = 0; c < numComponents; ++c) {
     long chi = compV[c] - compE[c] + compF[c];
-    genus_ += int((2 - chi - compLoops[c]) / 2);
+    result.genus += int((2 - chi - compLoops[c]) / 2);
   }
+  return result;
+}
+
+}  // namespace
+
+SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int, 3>> faces)
+    : positions_(std::move(positions)), faces_(std::move(faces)) {
+  checkIndicesAndValues(positions_, faces_);
+  const double edgeLengthSum = faceGeometry(positions_, faces_, normals_, frameX_, areas_);
+  {
+    const HalfEdgesByOrigin halfEdges(faces_, numVertices());
+    checkEdgeManifold(faces_, halfEdges);
+    numEdges_ = linkEdges(faces_, halfEdges, adjFace_, adjEdge_, edgeId_);
+    meanEdgeLength_ = edgeLengthSum / (3.0 * numFaces());
+    numUsedVertices_ = buildStars(numVertices(), halfEdges, adjFace_, adjEdge_, stars_, borderVertex_);
+  }
+  const Topology t = topology(faces_, numVertices(), adjFace_, stars_);
+  numComponents_ = t.numComponents;
+  numBorderLoops_ = t.numBorderLoops;
+  genus_ = t.genus;
 }
 
 int SurfaceMesh::eulerCharacteristic() const { return numUsedVertices_ - numEdges_ + numFaces(); }

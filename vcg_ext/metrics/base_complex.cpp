@@ -1,6 +1,6 @@
 #include "metrics/base_complex.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -11,7 +11,7 @@
 // t-junction of the layout lets a separatrix run on and cut more.
 #pragma once
 
-#include "quadrangulation/quad_mesh.h"
+#include "mesh/quad_mesh.h"
 
 namespace fcql {
 

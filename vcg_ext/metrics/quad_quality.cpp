@@ -1,5 +1,7 @@
 #include "metrics/quad_quality.h"
 
+#include "util/math_constants.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,8 +11,6 @@
 namespace fcql {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Angle (−π..π) of tangent vector d, projected onto face f, from the field's first direction
 /// u[f]; false if d has no component in the face's plane.

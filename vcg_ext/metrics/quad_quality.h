@@ -30,8 +30,9 @@
 #pragma once
 
 #include "field/cross_field.h"
-#include "metrics/closest_point_index.h"
-#include "quadrangulation/quad_mesh.h"
+#include "mesh/closest_point_index.h"
+#include "mesh/quad_mesh.h"
+#include "util/math_constants.h"
 
 #include <array>
 #include <vector>
@@ -116,6 +117,6 @@ struct QuadQuality {
 /// finer than that).
 QuadQuality measureQuadQuality(const QuadMesh& quads, const SurfaceMesh& surface, const CrossField& field,
                                const ClosestPointIndex& surfaceIndex, double deviationLimit = 0,
-                               double thresholdRad = 3.14159265358979323846 / 16);
+                               double thresholdRad = kPi / 16);
 
 }  // namespace fcql

@@ -9,7 +9,7 @@
 // neighbouring patches meet conformingly.
 #pragma once
 
-#include "quadrangulation/quad_mesh.h"
+#include "mesh/quad_mesh.h"
 #include "quadrangulation/side_lengths.h"
 
 namespace fcql {

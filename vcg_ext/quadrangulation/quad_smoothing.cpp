@@ -1,7 +1,8 @@
 #include "quadrangulation/quad_smoothing.h"
 
-#include "metrics/closest_point_index.h"
+#include "mesh/closest_point_index.h"
 #include "metrics/quad_quality.h"
+#include "util/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,6 @@ namespace fcql {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSnapShare = 0.35;
 constexpr double kMinScaledJacobian = 0.1;
 constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower

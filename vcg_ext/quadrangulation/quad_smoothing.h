@@ -22,7 +22,7 @@
 // the caller: quad.inverted_quads).
 #pragma once
 
-#include "quadrangulation/quad_mesh.h"
+#include "mesh/quad_mesh.h"
 
 #include <array>
 #include <vector>

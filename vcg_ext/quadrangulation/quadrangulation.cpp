@@ -1,6 +1,6 @@
 #include "quadrangulation/quadrangulation.h"
 
-#include "metrics/closest_point_index.h"
+#include "mesh/closest_point_index.h"
 #include "metrics/quad_quality.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "quadrangulation/side_lengths.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <chrono>

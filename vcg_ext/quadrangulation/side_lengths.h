@@ -8,7 +8,7 @@
 // that finds no solution within the time limit, its LP relaxation rounded).
 #pragma once
 
-#include "layout/integer_program.h"
+#include "solver/integer_program.h"
 #include "quadrangulation/patch_sides.h"
 
 #include <string>

@@ -2,6 +2,7 @@
 
 #include "quadrangulation/patch_map.h"
 #include "quadrangulation/patch_sampling.h"
+#include "util/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,6 @@
 
 namespace fcql {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double polylineLength(const std::vector<Vec3>& p) {
   double l = 0;
@@ -57,11 +56,37 @@ public:
     ps.chart = addChart(ps, edges, nodeUv);
   }
 
+  /// Splits patch p like a Catmull–Clark n-gon: every boundary segment halved, inner segments
+  /// from the middles to a centre, one quad part per boundary node.
   void split(int p) {
     PatchSides parent = g_.patches[p];  // copy: the vectors grow below
-    // Segments halved by a neighbour split in the same round are whole edges of this n-gon
-    // again: their halves and middle node are reused, so that the round splits its patches
-    // at once and leaves no t-junction between two of them.
+    reuseHalvedSegments(p, parent);
+    const std::vector<SideSegment> edges = ngonEdges(parent);
+    const int n = int(edges.size());
+    std::vector<Vec2> nodeUv(n);
+    const int chart = chartNodes(parent, edges, nodeUv);
+    const PatchMap& map = chartMap(chart);
+    Vec2 centreUv = Vec2::Zero();
+    for (const Vec2& uv : nodeUv) centreUv += uv / double(n);
+    const int centre = addNode(map.pointAt(centreUv));
+    const Halves halves = halveBoundary(p, edges, nodeUv);
+    const std::vector<int> inner = innerSegments(map, halves, centre, centreUv);
+    addParts(p, parent, edges, chart, halves, inner, centre, nodeUv, centreUv);
+  }
+
+private:
+  /// The boundary segments of a patch being split, halved: first/second half in the patch's
+  /// direction of travel, the middle node and its chart position, per boundary edge.
+  struct Halves {
+    std::vector<SideSegment> first, second;
+    std::vector<int> middle;
+    std::vector<Vec2> middleUv;
+  };
+
+  /// Segments halved by a neighbour split in the same round are whole edges of this n-gon
+  /// again: their halves and middle node are reused, so that the round splits its patches
+  /// at once and leaves no t-junction between two of them.
+  void reuseHalvedSegments(int p, PatchSides& parent) const {
     for (auto& side : parent.sides)
       for (std::size_t j = 0; j + 1 < side.size(); ++j) {
         auto it = halfOf_.find(side[j].segment);
@@ -73,7 +98,10 @@ public:
         side[j] = replacedSide_.at({p, it->second});
         side.erase(side.begin() + j + 1);
       }
-    // The boundary as an n-gon: its segments in order, with the chart position of each node.
+  }
+
+  /// The boundary as an n-gon: its segments in order. Throws for fewer than 3 or a slit.
+  static std::vector<SideSegment> ngonEdges(const PatchSides& parent) {
     std::vector<SideSegment> edges;
     for (const auto& side : parent.sides) edges.insert(edges.end(), side.begin(), side.end());
     const int n = int(edges.size());
@@ -82,60 +110,75 @@ public:
       if (edges[i].segment == edges[(i + 1) % n].segment)
         throw std::runtime_error("patch " + std::to_string(parent.layoutPatch) +
                                  " has a slit (a separatrix ends inside it): it cannot be cut into quads");
+    return edges;
+  }
+
+  /// The chart of the patch (a new one if it has none) and the chart position of each node.
+  int chartNodes(const PatchSides& parent, const std::vector<SideSegment>& edges, std::vector<Vec2>& nodeUv) {
     int chart = parent.chart;
-    std::vector<Vec2> nodeUv(n);
     if (chart < 0) {
       chart = addChart(parent, edges, nodeUv);
     } else if (parent.polygonCorners > 0) {
-      // A whole n-gon patch charted before its neighbours were split: the chart's vertices
-      // are known, the nodes added since lie between them by arc length.
-      const auto& known = g_.charts[chart].nodeUv;
-      std::vector<int> node(n);
-      std::vector<double> at(n + 1, 0);
-      for (int i = 0; i < n; ++i) {
-        const SideSegment& e = edges[i];
-        node[i] = e.reversed ? g_.segments[e.segment].nodeB : g_.segments[e.segment].nodeA;
-        at[i + 1] = at[i] + g_.segments[e.segment].length;
-      }
-      int first = -1;
-      for (int i = 0; i < n && first < 0; ++i)
-        if (known.count(node[i])) first = i;
-      if (first < 0) throw std::runtime_error("zero chains: a charted patch lost its corners");
-      for (int step = 0; step < n;) {
-        const int a = (first + step) % n;
-        int gap = 1;
-        while (!known.count(node[(a + gap) % n])) ++gap;
-        const Vec2 ua = known.at(node[a]), ub = known.at(node[(a + gap) % n]);
-        auto arc = [&](int k) { return at[(a + k) % n] + (a + k >= n ? at[n] : 0.0); };
-        const double span = arc(gap) - arc(0);
-        for (int k = 0; k < gap; ++k) {
-          const double t = span > 0 ? (arc(k) - arc(0)) / span : 0.0;
-          nodeUv[(a + k) % n] = ua * (1 - t) + ub * t;
-        }
-        step += gap;
-      }
+      nodesBetweenKnownOnes(chart, edges, nodeUv);
     } else {
-      // A part split again: its nodes lie on the straight sides of its quad in the chart.
-      int e = 0;
-      for (int k = 0; k < 4; ++k) {
-        double total = 0, run = 0;
-        for (const auto& ss : parent.sides[k]) total += g_.segments[ss.segment].length;
-        for (const auto& ss : parent.sides[k]) {
-          const double t = total > 0 ? run / total : 0;
-          nodeUv[e++] = parent.chartCorners[k] * (1 - t) + parent.chartCorners[(k + 1) % 4] * t;
-          run += g_.segments[ss.segment].length;
-        }
+      nodesOnQuadSides(parent, nodeUv);
+    }
+    return chart;
+  }
+
+  /// A whole n-gon patch charted before its neighbours were split: the chart's vertices are
+  /// known, the nodes added since lie between them by arc length.
+  void nodesBetweenKnownOnes(int chart, const std::vector<SideSegment>& edges, std::vector<Vec2>& nodeUv) const {
+    const int n = int(edges.size());
+    const auto& known = g_.charts[chart].nodeUv;
+    std::vector<int> node(n);
+    std::vector<double> at(n + 1, 0);
+    for (int i = 0; i < n; ++i) {
+      const SideSegment& e = edges[i];
+      node[i] = e.reversed ? g_.segments[e.segment].nodeB : g_.segments[e.segment].nodeA;
+      at[i + 1] = at[i] + g_.segments[e.segment].length;
+    }
+    int first = -1;
+    for (int i = 0; i < n && first < 0; ++i)
+      if (known.count(node[i])) first = i;
+    if (first < 0) throw std::runtime_error("zero chains: a charted patch lost its corners");
+    for (int step = 0; step < n;) {
+      const int a = (first + step) % n;
+      int gap = 1;
+      while (!known.count(node[(a + gap) % n])) ++gap;
+      const Vec2 ua = known.at(node[a]), ub = known.at(node[(a + gap) % n]);
+      auto arc = [&](int k) { return at[(a + k) % n] + (a + k >= n ? at[n] : 0.0); };
+      const double span = arc(gap) - arc(0);
+      for (int k = 0; k < gap; ++k) {
+        const double t = span > 0 ? (arc(k) - arc(0)) / span : 0.0;
+        nodeUv[(a + k) % n] = ua * (1 - t) + ub * t;
+      }
+      step += gap;
+    }
+  }
+
+  /// A part split again: its nodes lie on the straight sides of its quad in the chart.
+  void nodesOnQuadSides(const PatchSides& parent, std::vector<Vec2>& nodeUv) const {
+    int e = 0;
+    for (int k = 0; k < 4; ++k) {
+      double total = 0, run = 0;
+      for (const auto& ss : parent.sides[k]) total += g_.segments[ss.segment].length;
+      for (const auto& ss : parent.sides[k]) {
+        const double t = total > 0 ? run / total : 0;
+        nodeUv[e++] = parent.chartCorners[k] * (1 - t) + parent.chartCorners[(k + 1) % 4] * t;
+        run += g_.segments[ss.segment].length;
       }
     }
-    const PatchMap& map = chartMap(chart);
-    Vec2 centreUv = Vec2::Zero();
-    for (const Vec2& uv : nodeUv) centreUv += uv / double(n);
-    const int centre = addNode(map.pointAt(centreUv));
+  }
 
-    // Halve every boundary segment; first/second half in the patch's direction of travel.
-    std::vector<SideSegment> firstHalf(n), secondHalf(n);
-    std::vector<int> middle(n);
-    std::vector<Vec2> middleUv(n);
+  /// Halves every boundary segment of patch p (each segment once).
+  Halves halveBoundary(int p, const std::vector<SideSegment>& edges, const std::vector<Vec2>& nodeUv) {
+    const int n = int(edges.size());
+    Halves h;
+    h.first.resize(n);
+    h.second.resize(n);
+    h.middle.resize(n);
+    h.middleUv.resize(n);
     for (int i = 0; i < n; ++i) {
       const SideSegment ss = edges[i];
       // A segment is halved once: a patch whose boundary meets itself (a torus cut open into
@@ -148,40 +191,51 @@ public:
         halfOf_[a] = halfOf_[b] = ss.segment;
       }
       const int a = it->second[0], b = it->second[1];
-      middle[i] = it->second[2];
-      firstHalf[i] = ss.reversed ? SideSegment{b, true, 0} : SideSegment{a, false, 0};
-      secondHalf[i] = ss.reversed ? SideSegment{a, true, 0} : SideSegment{b, false, 0};
-      middleUv[i] = 0.5 * (nodeUv[i] + nodeUv[(i + 1) % n]);
+      h.middle[i] = it->second[2];
+      h.first[i] = ss.reversed ? SideSegment{b, true, 0} : SideSegment{a, false, 0};
+      h.second[i] = ss.reversed ? SideSegment{a, true, 0} : SideSegment{b, false, 0};
+      h.middleUv[i] = 0.5 * (nodeUv[i] + nodeUv[(i + 1) % n]);
     }
-    // Inner segments from each middle to the centre, straight in the chart.
+    return h;
+  }
+
+  /// Inner segments from each middle to the centre, straight in the chart.
+  std::vector<int> innerSegments(const PatchMap& map, const Halves& h, int centre, const Vec2& centreUv) {
+    const int n = int(h.middle.size());
     std::vector<int> inner(n);
     for (int i = 0; i < n; ++i) {
       LayoutSegment s;
       const int samples = 16;
-      s.polyline.push_back(g_.nodePosition(layout_, middle[i]));
+      s.polyline.push_back(g_.nodePosition(layout_, h.middle[i]));
       for (int j = 1; j < samples; ++j)
-        s.polyline.push_back(map.pointAt(middleUv[i] + (centreUv - middleUv[i]) * (double(j) / samples)));
+        s.polyline.push_back(map.pointAt(h.middleUv[i] + (centreUv - h.middleUv[i]) * (double(j) / samples)));
       s.polyline.push_back(g_.nodePosition(layout_, centre));
       s.length = polylineLength(s.polyline);
-      s.nodeA = middle[i];
+      s.nodeA = h.middle[i];
       s.nodeB = centre;
       inner[i] = int(g_.segments.size());
       g_.segments.push_back(std::move(s));
     }
-    // One part per node i (where edge i−1 ends and edge i starts): middle(i−1), node i,
-    // middle(i), centre.
+    return inner;
+  }
+
+  /// One part per node i (where edge i−1 ends and edge i starts): middle(i−1), node i,
+  /// middle(i), centre. Patch p is retired; the segments name the parts as their patches.
+  void addParts(int p, const PatchSides& parent, const std::vector<SideSegment>& edges, int chart, const Halves& h,
+                const std::vector<int>& inner, int centre, const std::vector<Vec2>& nodeUv, const Vec2& centreUv) {
+    const int n = int(edges.size());
     g_.patches[p].active = false;
     for (int i = 0; i < n; ++i) {
       const int prev = (i + n - 1) % n;
       PatchSides c;
-      c.sides = {std::vector<SideSegment>{secondHalf[prev]}, std::vector<SideSegment>{firstHalf[i]},
+      c.sides = {std::vector<SideSegment>{h.second[prev]}, std::vector<SideSegment>{h.first[i]},
                  std::vector<SideSegment>{{inner[i], false, 0}}, std::vector<SideSegment>{{inner[prev], true, 0}}};
       const SideSegment& e = edges[i];
       const int node = e.reversed ? g_.segments[e.segment].nodeB : g_.segments[e.segment].nodeA;
-      c.corners = {middle[prev], node, middle[i], centre};
+      c.corners = {h.middle[prev], node, h.middle[i], centre};
       c.layoutPatch = parent.layoutPatch;
       c.chart = chart;
-      c.chartCorners = {middleUv[prev], nodeUv[i], middleUv[i], centreUv};
+      c.chartCorners = {h.middleUv[prev], nodeUv[i], h.middleUv[i], centreUv};
       c.original = false;
       c.forceEqual = true;
       const int id = int(g_.patches.size());
@@ -197,7 +251,6 @@ public:
     }
   }
 
-private:
   int addNode(const Vec3& x) {
     g_.extraNodes.push_back(x);
     return g_.numLayoutVertices + int(g_.extraNodes.size()) - 1;

@@ -1,5 +1,7 @@
 #include "render/rasterizer.h"
 
+#include "util/math_constants.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -10,7 +12,6 @@ namespace fcql::render {
 
 namespace {
 const float kFar = std::numeric_limits<float>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 Rasterizer::Rasterizer(int width, int height, const CameraSetup& cam, Rgb background, int supersample)

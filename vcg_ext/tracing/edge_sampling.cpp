@@ -1,6 +1,7 @@
 #include "tracing/edge_sampling.h"
 
-#include "mesh/worker_threads.h"
+#include "util/math_constants.h"
+#include "util/worker_threads.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,8 +12,6 @@
 
 namespace fcql {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double angleAt(const Vec3& apex, const Vec3& a, const Vec3& b) {
   Vec3 u = a - apex, v = b - apex;

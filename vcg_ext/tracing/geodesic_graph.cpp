@@ -1,6 +1,7 @@
 #include "tracing/geodesic_graph.h"
 
-#include "mesh/worker_threads.h"
+#include "util/math_constants.h"
+#include "util/worker_threads.h"
 
 #include <algorithm>
 #include <atomic>
@@ -13,7 +14,6 @@
 namespace fcql {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const double kCos45 = std::cos(kPi / 4) - 1e-12;
 
 bool withinSector(const Vec3& w, const Vec3& d) {

@@ -1,6 +1,6 @@
 #include "tracing/polyline_io.h"
 
-#include "mesh/number_text.h"
+#include "util/number_text.h"
 
 namespace fcql {
 

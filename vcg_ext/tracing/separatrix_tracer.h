@@ -4,8 +4,8 @@
 // first orthogonal crossing of a barrier or at the border.
 // Searches for sinks run on G's weights reduced by the distance to the nearest sink (A* with
 // an exact heuristic, sink_distance.h): the same sinks in the same order by the same shortest
-// paths as on Eq. 1's weights (ties and rounding aside), settling far fewer nodes (a third on
-// the bunny). T-junction searches run on Eq. 1 itself.
+// paths as on Eq. 1's weights (ties and rounding aside), settling far fewer nodes
+// (bench/RESULTS.md). T-junction searches run on Eq. 1 itself.
 #pragma once
 
 #include "tracing/geodesic_graph.h"

@@ -1,7 +1,7 @@
 #include "tracing/sink_distance.h"
 
-#include "mesh/worker_threads.h"
-#include "tracing/radix_heap.h"
+#include "util/worker_threads.h"
+#include "util/radix_heap.h"
 
 #include <atomic>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Graph H's tangential crossings as conflict cliques (see classifyCrossings).
-#include "mesh/worker_threads.h"
+#include "util/worker_threads.h"
 #include "tracing/separatrix_graph.h"
 
 #include <algorithm>

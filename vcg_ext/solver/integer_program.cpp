@@ -1,6 +1,6 @@
-#include "layout/integer_program.h"
+#include "solver/integer_program.h"
 
-#include "layout/lp_solve_support.h"
+#include "solver/lp_solve_support.h"
 
 #include <algorithm>
 #include <chrono>

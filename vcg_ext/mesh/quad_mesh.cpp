@@ -1,6 +1,6 @@
-#include "quadrangulation/quad_mesh.h"
+#include "mesh/quad_mesh.h"
 
-#include "mesh/union_find.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <cstdint>

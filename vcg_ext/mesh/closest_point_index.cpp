@@ -1,4 +1,4 @@
-#include "metrics/closest_point_index.h"
+#include "mesh/closest_point_index.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "layout/lp_solve_support.h"
+#include "solver/lp_solve_support.h"
 
 #include <algorithm>
 #include <cmath>

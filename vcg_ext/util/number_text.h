@@ -1,5 +1,5 @@
 // Writing numbers into text files fast: the writers of candidates.obj and field files emit
-// millions of coordinates, and stream formatting took a quarter of a second on the bunny.
+// millions of coordinates, too many for stream formatting (bench/RESULTS.md).
 #pragma once
 
 #include <charconv>

@@ -6,8 +6,7 @@
 //     it in that round) or, when no row is violated, the variables with the largest positive
 //     reduced costs under the duals of the rows, and lp_solve solves again from its last
 //     basis, until neither is left. The relaxation's optimum is that of the full LP, but
-//     lp_solve works on part of it (the dragon's largest part: 3.2K of 11.4K rows and 5.0K
-//     of 10.8K variables in 121 rounds, about 1 s instead of 5.3 s).
+//     lp_solve works on part of it (bench/RESULTS.md has the dragon's figures).
 //  2. Relax and fix: variables at 1 in the relaxation are taken, those at 0 left out, and the
 //     fractional rest, which splits into small independent parts, is solved exactly part by
 //     part by branch and bound; any variable left free after that is added, heaviest first.
@@ -18,7 +17,7 @@
 //     2's selection) or the time runs out (a safety stop). The better selection is kept.
 #pragma once
 
-#include "layout/integer_program.h"
+#include "solver/integer_program.h"
 
 #include <string>
 #include <vector>

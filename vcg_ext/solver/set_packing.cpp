@@ -1,7 +1,7 @@
-#include "layout/set_packing.h"
+#include "solver/set_packing.h"
 
-#include "layout/lp_solve_support.h"
-#include "mesh/union_find.h"
+#include "solver/lp_solve_support.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <chrono>
