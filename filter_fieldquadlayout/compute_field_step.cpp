@@ -27,6 +27,7 @@ FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params
     r.existingFieldMissing = params.useExisting;
     fcql::FieldGenerationOptions options;
     options.sharpAngleDeg = params.sharpAngleDeg;
+    options.scale = params.fieldScale;
     r.field = fcql::generateCrossField(r.converted.mesh, options, &r.generation);
   }
   r.fieldSeconds = secondsSince(t1);
@@ -95,11 +96,11 @@ std::vector<std::string> describeFieldStep(const FieldStepResult& r,
   } else if (r.keptExistingField) {
     lines.push_back("Cross field: kept the field already on the mesh (per-face PD1/PD2)");
   } else {
-    char angle[32];
-    std::snprintf(angle, sizeof angle, "%g", params.sharpAngleDeg);
+    char angle[64];
+    std::snprintf(angle, sizeof angle, "%g deg, field scale %g", params.sharpAngleDeg, params.fieldScale);
     lines.push_back(std::string("Cross field: computed") +
                     (r.existingFieldMissing ? " (the mesh had no field to keep)" : "") +
-                    ", sharp angle " + angle + " deg: " + std::to_string(r.generation.sharpEdges) +
+                    ", sharp angle " + angle + ": " + std::to_string(r.generation.sharpEdges) +
                     " sharp edges, " + std::to_string(r.generation.constrainedFaces) +
                     " constrained faces");
   }

@@ -13,6 +13,10 @@ constexpr const char* FieldParameters::kFieldFile;
 constexpr double FieldParameters::kDefaultSharpAngle;
 constexpr double FieldParameters::kMinSharpAngle;
 constexpr double FieldParameters::kMaxSharpAngle;
+constexpr const char* FieldParameters::kFieldScale;
+constexpr double FieldParameters::kDefaultFieldScale;
+constexpr double FieldParameters::kMinFieldScale;
+constexpr double FieldParameters::kMaxFieldScale;
 constexpr const char* TracingParameters::kAlpha;
 constexpr const char* TracingParameters::kK;
 constexpr const char* TracingParameters::kPhi;
@@ -23,6 +27,12 @@ constexpr const char* LayoutParameters::kIlpTimeLimit;
 constexpr double LayoutParameters::kDefaultIlpTimeLimit;
 constexpr double LayoutParameters::kMinIlpTimeLimit;
 constexpr double LayoutParameters::kMaxIlpTimeLimit;
+constexpr const char* LayoutParameters::kIlpStall;
+constexpr const char* LayoutParameters::kCompletionTrials;
+constexpr int LayoutParameters::kDefaultIlpStall;
+constexpr int LayoutParameters::kMaxIlpStall;
+constexpr int LayoutParameters::kDefaultCompletionTrials;
+constexpr int LayoutParameters::kMaxCompletionTrials;
 constexpr const char* QuadParameters::kScale;
 constexpr double QuadParameters::kDefaultScale;
 constexpr double QuadParameters::kMinScale;
@@ -61,6 +71,18 @@ double readFloatAtLeast(const RichParameterList& list, const char* key, double l
   return value;
 }
 
+/// An integer parameter added after the first release: absent in older scripts, where it takes
+/// its default; present, it must lie in [lo, hi].
+int readOptionalIntInRange(const RichParameterList& list, const char* key, int fallback, int lo, int hi,
+                           const char* what) {
+  if (!list.hasParameter(QString(key))) return fallback;
+  const int value = list.getInt(QString(key));
+  if (value < lo || value > hi)
+    throw ParameterError(std::string("parameter '") + key + "' (" + what + ") is " + std::to_string(value) +
+                         ", must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+  return value;
+}
+
 }  // namespace
 
 void addFieldParameters(RichParameterList& list) {
@@ -84,6 +106,14 @@ void addFieldParameters(RichParameterList& list) {
       "--field` reads it. Empty (the default): no file. A file of the wrong face count, "
       "truncated, with NaNs or zero vectors makes the filter fail and leaves the mesh as it "
       "was. Takes precedence over 'Use existing field'.");
+  list.addParam(RichFloat(
+      QString(FieldParameters::kFieldScale), float(FieldParameters::kDefaultFieldScale),
+      "Field scale (fraction of the diagonal)",
+      "Length over which the surface's curvature is spread before the computed field places "
+      "its singularities, as a fraction of the bounding-box diagonal (like fcql field "
+      "--field-scale): bumps smaller than this make no singularity pairs. 0 gives the field of "
+      "the unmodified surface (one pair per bump of noise). Valid range 0..1. Ignored when a "
+      "field is read or kept."));
 }
 
 FieldParameters readFieldParameters(const RichParameterList& list) {
@@ -96,6 +126,10 @@ FieldParameters readFieldParameters(const RichParameterList& list) {
   // Absent in scripts written before it existed: no file then.
   if (list.hasParameter(QString(FieldParameters::kFieldFile)))
     p.fieldFile = list.getOpenFileName(QString(FieldParameters::kFieldFile)).toStdString();
+  // Absent in scripts written before it existed: the default then.
+  if (list.hasParameter(QString(FieldParameters::kFieldScale)))
+    p.fieldScale = readFloatInRange(list, FieldParameters::kFieldScale, FieldParameters::kMinFieldScale,
+                                    FieldParameters::kMaxFieldScale, "field scale as a fraction of the diagonal");
   return p;
 }
 
@@ -136,6 +170,18 @@ void addLayoutParameters(RichParameterList& list) {
       "Time limit of each 0-1 program that selects the separatrices (lp_solve), and of the "
       "side-length program of the quad mesh in all. When it is reached the best selection "
       "found so far is used and the log says so. Valid range 1..86400 seconds."));
+  list.addParam(RichInt(
+      QString(LayoutParameters::kIlpStall), LayoutParameters::kDefaultIlpStall,
+      "ILP stall (branch-and-bound nodes)",
+      "Branch and bound on the separatrix selection stops once this many of its nodes brought "
+      "no better selection (like fcql layout --ilp-stall); counted in nodes, so the same input "
+      "gives the same layout on any machine. 0: only the time limit stops it."));
+  list.addParam(RichInt(
+      QString(LayoutParameters::kCompletionTrials), LayoutParameters::kDefaultCompletionTrials,
+      "Completion trials",
+      "Where ports are left dangling after the solving cycle, up to this many sets of the "
+      "separatrices in their way are freed and their ports matched again, each kept only if "
+      "fewer t-junctions remain (like fcql layout --completion-trials). 0: no completion."));
 }
 
 LayoutParameters readLayoutParameters(const RichParameterList& list) {
@@ -143,6 +189,11 @@ LayoutParameters readLayoutParameters(const RichParameterList& list) {
   p.ilpTimeLimit = readFloatInRange(list, LayoutParameters::kIlpTimeLimit,
                                     LayoutParameters::kMinIlpTimeLimit,
                                     LayoutParameters::kMaxIlpTimeLimit, "ILP time limit in seconds");
+  p.ilpStall = readOptionalIntInRange(list, LayoutParameters::kIlpStall, LayoutParameters::kDefaultIlpStall, 0,
+                                      LayoutParameters::kMaxIlpStall, "branch-and-bound nodes without improvement");
+  p.completionTrials =
+      readOptionalIntInRange(list, LayoutParameters::kCompletionTrials, LayoutParameters::kDefaultCompletionTrials, 0,
+                             LayoutParameters::kMaxCompletionTrials, "completion trials");
   return p;
 }
 

@@ -25,13 +25,18 @@ struct FieldParameters {
   static constexpr const char* kSharpAngle = "sharp_angle";
   static constexpr const char* kUseExisting = "use_existing";
   static constexpr const char* kFieldFile = "field_file";
+  static constexpr const char* kFieldScale = "field_scale";
   static constexpr double kDefaultSharpAngle = 35.0;
   static constexpr double kMinSharpAngle = 0.0;
   static constexpr double kMaxSharpAngle = 180.0;
+  static constexpr double kDefaultFieldScale = 0.02;  ///< as `fcql field --field-scale`
+  static constexpr double kMinFieldScale = 0.0;
+  static constexpr double kMaxFieldScale = 1.0;
 
   double sharpAngleDeg = kDefaultSharpAngle;  ///< dihedral angle above which an edge is a feature
   bool useExisting = false;                   ///< keep the field already in PD1/PD2, if any
   std::string fieldFile;                      ///< a .ffield/.rosy to read (empty: none)
+  double fieldScale = kDefaultFieldScale;     ///< curvature scale, fraction of the diagonal
 };
 
 void addFieldParameters(RichParameterList& list);
@@ -57,11 +62,19 @@ TracingParameters readTracingParameters(const RichParameterList& list);
 // ---- Solve Layout (filter 3; filter 5 adds it after the field and tracing groups) ------------
 struct LayoutParameters {
   static constexpr const char* kIlpTimeLimit = "ilp_time_limit";
+  static constexpr const char* kIlpStall = "ilp_stall";
+  static constexpr const char* kCompletionTrials = "completion_trials";
   static constexpr double kDefaultIlpTimeLimit = 60.0;
   static constexpr double kMinIlpTimeLimit = 1.0;
   static constexpr double kMaxIlpTimeLimit = 86400.0;
+  static constexpr int kDefaultIlpStall = 50;          ///< as `fcql layout --ilp-stall`
+  static constexpr int kMaxIlpStall = 100000000;
+  static constexpr int kDefaultCompletionTrials = 24;  ///< as `fcql layout --completion-trials`
+  static constexpr int kMaxCompletionTrials = 100000;
 
   double ilpTimeLimit = kDefaultIlpTimeLimit;  ///< seconds per 0-1 program
+  int ilpStall = kDefaultIlpStall;             ///< branch-and-bound nodes without improvement
+  int completionTrials = kDefaultCompletionTrials;  ///< sets of separatrices the completion may free
 };
 
 void addLayoutParameters(RichParameterList& list);

@@ -10,6 +10,8 @@ LayoutResult solveLayoutStage(const fcql::SurfaceMesh& mesh, const fcql::CrossFi
                               const LayoutParameters& params, const Progress& progress) {
   fcql::LayoutParameters core;
   core.ilpTimeLimit = params.ilpTimeLimit;
+  core.ilpStallNodes = params.ilpStall;
+  core.completionTrials = params.completionTrials;
   core.validate();
 
   LayoutResult r;

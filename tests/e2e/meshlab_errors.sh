@@ -55,6 +55,9 @@ bad_param all_phi "$all" "All Steps" phi 0.5 "'phi' .* is 0.5, must be between 1
 bad_param all_k "$all" "All Steps" k -3 "'k' .* is -3, must be >= 1"
 bad_param all_sharp "$all" "All Steps" sharp_angle 500 "'sharp_angle' .* is 500, must be between 0 and 180"
 bad_param all_scale "$all" "All Steps" scale 0 "'scale' .* is 0"
+bad_param stall_negative "$layout" "Solve Layout" ilp_stall -1 "'ilp_stall' .* is -1, must be between 0 and"
+bad_param all_completion "$all" "All Steps" completion_trials -2 "'completion_trials' .* is -2, must be between 0 and"
+bad_param all_field_scale "$all" "All Steps" field_scale 2 "'field_scale' .* is 2, must be between 0 and 1"
 
 # Out of order: the step without Compute Cross Field before it.
 for case in "trace|$trace|Trace Separatrices" "layout|$layout|Solve Layout" "quad|$quad|Quadrangulate"; do

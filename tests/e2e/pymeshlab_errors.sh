@@ -53,7 +53,7 @@ done
 grep '# Field-Coherent Quad Layout: ' "$work/filters.out" | sed 's/^[^(]*(//; s/)  #.*//' |
   tr ',' '\n' | sed 's/^ *//; s/:.*//' | sort -u >"$work/params.txt"
 echo "parameters: $(tr '\n' ' ' <"$work/params.txt")"
-for p in alpha k phi sharp_angle use_existing ilp_time_limit scale; do
+for p in alpha k phi sharp_angle use_existing field_file field_scale ilp_time_limit ilp_stall completion_trials scale; do
   grep -qx "$p" "$work/params.txt" || fail "parameter $p is not listed"
 done
 if grep -qvE '^[a-z_][a-z0-9_]*$' "$work/params.txt"; then

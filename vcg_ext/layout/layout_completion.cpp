@@ -19,6 +19,9 @@ struct FreeingOption {
 /// At most this many separatrices are freed for one path: more would rebuild a large part of
 /// the layout for one pair of ports.
 constexpr std::size_t kMaxFreed = 16;
+/// A trial's searches stop after this many times k sinks: the few ports it frees need more
+/// alternatives than the first program's searches to be matched all at once.
+constexpr int kTrialSinkFactor = 3;
 
 std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout) {
   const std::vector<char> used = usedPorts(graph, layout);
@@ -159,7 +162,8 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
         if (b >= 0) sources[b] = 1;
       }
       for (auto it = freed.rbegin(); it != freed.rend(); ++it) trial.separatrices.erase(trial.separatrices.begin() + *it);
-      runSolvingCycle(graph, trial, params, SelectionWeights::CoverageFirst, &sources);
+      runSolvingCycle(graph, trial, params, SelectionWeights::CoverageFirst, &sources,
+                      kTrialSinkFactor * graph.parameters().k);
       const int defects = propagationDefects(graph, trial);
       if (defects < current) {
         report.freedSeparatrices += int(freed.size());

@@ -89,7 +89,7 @@ std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
 }
 
 void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
-                     const SelectionWeights weights, const std::vector<char>* sourcesOnly) {
+                     const SelectionWeights weights, const std::vector<char>* sourcesOnly, int maxSinks) {
   // A search that ran out of graph before finding as many sinks as it was allowed proves the
   // sinks it did not find out of reach of its port, and they stay out of reach in later
   // rounds: the barriers only grow. Later searches leave them out, so they stop once the sinks
@@ -110,7 +110,7 @@ void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutPar
     for (int p : dangling) {
       if (sourcesOnly && !(*sourcesOnly)[p]) continue;
       SearchOptions o;
-      o.maxSinks = graph.parameters().k;
+      o.maxSinks = maxSinks > 0 ? maxSinks : graph.parameters().k;
       o.barriers = &barriers;
       o.sinkAllowed = outOfReach.allowedFrom(p, free);
       if (std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1) == 0) continue;

@@ -97,8 +97,9 @@ enum class SelectionWeights { Length, CoverageFirst };
 /// Step 2: searches from the dangling ports with `layout` frozen as barriers, selection among
 /// the new candidates, until nothing is added (at most params.maxIterations − 1 rounds). With
 /// `sourcesOnly`, only the dangling ports it marks are searched from (every free port is a sink).
+/// Each search stops after `maxSinks` sinks (0: k, the graph's parameter).
 void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
-                     SelectionWeights weights, const std::vector<char>* sourcesOnly = nullptr);
+                     SelectionWeights weights, const std::vector<char>* sourcesOnly = nullptr, int maxSinks = 0);
 /// Raises every arc's length by more than all of them together: the selection's weights
 /// (mean length / length) then favour covering more ports over any saving in length.
 void weighCoverageFirst(SeparatrixGraph& h);
