@@ -1,5 +1,7 @@
 #include "quadrangulation/patch_map.h"
 
+#include "quadrangulation/field_aligned_map.h"
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
@@ -21,7 +23,8 @@ int PatchMap::wedge(int t, int c) const {
 }
 
 PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
-                   const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv)
+                   const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
+                   const PatchGuide* guide)
     : layout_(layout), patch_(patch), triangles_(triangles) {
   for (int t : triangles_)
     for (int c = 0; c < 3; ++c) {
@@ -45,10 +48,75 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
       unite(t * 3 + (i + 1) % 3, t2 * 3 + cornerIn(t2, b));
     }
   const PatchReport& rep = layout.patches[patch];
-  for (int k = 0; k < int(rep.loop.size()); ++k)
-    uv_[wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k]))] = boundaryUv(k);
+  for (int k = 0; k < int(rep.loop.size()); ++k) {
+    loopWedge_.push_back(wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k])));
+    uv_[loopWedge_.back()] = boundaryUv(k);
+  }
   mapInterior();
+  if (guide && guide->faceDirections) alignToField(*guide, halfEdges);
   indexTriangles();
+}
+
+Vec2 PatchMap::loopImage(int k) const { return uv_.at(loopWedge_.at(k)); }
+
+void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges) {
+  FieldAlignedProblem pb;
+  std::unordered_map<int, int> index;  // wedge -> its number in pb
+  std::vector<int> wedgeOf;
+  std::unordered_map<int, int> local;  // layout triangle -> its number in pb
+  for (int k = 0; k < int(triangles_.size()); ++k) local[triangles_[k]] = k;
+  for (int t : triangles_) {
+    std::array<int, 3> w;
+    std::array<Vec3, 3> p;
+    for (int c = 0; c < 3; ++c) {
+      const int x = wedge(t, c);
+      auto it = index.find(x);
+      if (it == index.end()) {
+        it = index.emplace(x, int(wedgeOf.size())).first;
+        wedgeOf.push_back(x);
+        pb.start.push_back(uv_.at(x));
+        pb.constraint.push_back(FieldAlignedProblem::Free);
+      }
+      w[c] = it->second;
+      p[c] = layout_.positions[layout_.triangles[t][c]];
+    }
+    pb.triangles.push_back(w);
+    pb.corners.push_back(p);
+    const int face = layout_.originalFace[t];
+    pb.direction.push_back(face >= 0 && face < int(guide.faceDirections->size()) ? (*guide.faceDirections)[face] : Vec3::Zero());
+    std::array<int, 3> nb{-1, -1, -1};
+    for (int i = 0; i < 3; ++i) {
+      if (layout_.edgeCurve[t][i] != -1) continue;
+      auto it = halfEdges.find(edgeKey(layout_.triangles[t][(i + 1) % 3], layout_.triangles[t][i]));
+      if (it == halfEdges.end()) continue;
+      auto jt = local.find(it->second / 3);
+      if (jt != local.end()) nb[i] = jt->second;
+    }
+    pb.neighbours.push_back(nb);
+  }
+  for (const int x : loopWedge_) pb.constraint[index.at(x)] = FieldAlignedProblem::Fixed;
+  for (int k = 0; k < int(guide.loopConstraint.size()) && k < int(loopWedge_.size()); ++k)
+    pb.constraint[index.at(loopWedge_[k])] = guide.loopConstraint[k];
+  // A wedge the loop meets twice (a cut) is fixed.
+  std::unordered_map<int, int> seen;
+  for (const int x : loopWedge_)
+    if (++seen[x] > 1) pb.constraint[index.at(x)] = FieldAlignedProblem::Fixed;
+  const FieldAlignedResult aligned = solveFieldAlignedMap(pb);
+  guided_ = GuidedMap::MeanValue;
+  if (!aligned.solved) return;
+  // The aligned map where it does not fold, else blended back towards the mean-value map.
+  // (Counted against the mean-value map's own, which rounding can leave on slivers.)
+  const int before = foldedTriangles(pb.triangles, pb.start, 0);
+  std::vector<Vec2> uv = aligned.uv;
+  for (double share : {1.0, 0.5, 0.25, 0.125, 0.0}) {
+    for (std::size_t w = 0; w < uv.size(); ++w) uv[w] = share * aligned.uv[w] + (1 - share) * pb.start[w];
+    if (share == 0.0) return;
+    if (foldedTriangles(pb.triangles, uv, 0) <= before) {
+      guided_ = share == 1.0 ? GuidedMap::Aligned : GuidedMap::Blended;
+      break;
+    }
+  }
+  for (std::size_t w = 0; w < uv.size(); ++w) uv_[wedgeOf[w]] = uv[w];
 }
 
 void PatchMap::mapInterior() {
@@ -138,7 +206,7 @@ int PatchMap::cellCoordinate(double value, int axis) const {
   return t >= gridN_ ? gridN_ - 1 : int(t);
 }
 
-Vec3 PatchMap::pointAt(const Vec2& x) const {
+Vec3 PatchMap::pointAt(const Vec2& x, int* triangle) const {
   int best = -1;
   double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
   // Barycentric coordinates of x in triangle k (of triangles_); false if it is degenerate.
@@ -162,6 +230,7 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
       double l0, l1, l2;
       const int k = cellTriangles_[i];
       if (!locate(k, l0, l1, l2) || !(std::min({l0, l1, l2}) >= 0)) continue;  // NaN too, as the scan
+      if (triangle) *triangle = triangles_[k];
       return pointOn(triangles_[k], l0, l1, l2);
     }
   }
@@ -181,6 +250,7 @@ Vec3 PatchMap::pointAt(const Vec2& x) const {
     const double sum = b0 + b1 + b2;
     b0 /= sum, b1 /= sum, b2 /= sum;
   }
+  if (triangle) *triangle = best;
   return pointOn(best, b0, b1, b2);
 }
 

@@ -60,6 +60,9 @@ int dissolveTwoValentVertices(QuadMesh& mesh) {
 
 namespace {
 
+/// With a field, folds left after smoothing up to this many send their patches back to
+/// mean-value coordinates for a second pass.
+constexpr int kMaxFoldsResampled = 16;
 
 /// One pass of the stage at one target edge length; `surface` is the topology of the layout's
 /// triangles, which the quad mesh must have.
@@ -111,10 +114,60 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     ++r.splitRounds;
     r.lengths = solveLengths(r.graph);
   }
-  r.mesh = samplePatches(layout, r.graph, r.lengths);
-  r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
-  r.sampledPositions = r.mesh.positions;
-  r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
+  const std::vector<Vec3>* field = options.fieldDirections.empty() ? nullptr : &options.fieldDirections;
+  SmoothingOptions smoothing = options.smoothing;
+  if (field && smoothing.triangleDirections.empty()) {
+    smoothing.triangleDirections.assign(layout.triangles.size(), Vec3::Zero());
+    for (std::size_t t = 0; t < layout.triangles.size(); ++t) {
+      const int f = layout.originalFace[t];
+      if (f >= 0 && f < int(options.fieldDirections.size())) smoothing.triangleDirections[t] = options.fieldDirections[f];
+    }
+  }
+  auto folds = [](const QuadMesh& m, std::vector<int>* which = nullptr) {
+    std::vector<double> j;
+    QuadJacobian(m).all(j);
+    int n = 0;
+    for (int q = 0; q < int(j.size()); ++q)
+      if (!(j[q] > 0)) {
+        ++n;
+        if (which) which->push_back(q);
+      }
+    return n;
+  };
+  // Sampled (some patches left to mean-value coordinates), then smoothed.
+  struct Sampled {
+    QuadMesh mesh;
+    std::vector<Vec3> positions;
+    SmoothingReport smoothing;
+    int dissolved = 0, folds = 0;
+  };
+  auto sampleAndSmooth = [&](const std::vector<char>* meanValue) {
+    Sampled s;
+    s.mesh = samplePatches(layout, r.graph, r.lengths, field, meanValue);
+    s.dissolved = dissolveTwoValentVertices(s.mesh);
+    s.positions = s.mesh.positions;
+    s.smoothing = smoothQuadMesh(s.mesh, layout.positions, layout.triangles, smoothing);
+    s.folds = field ? folds(s.mesh) : 0;
+    return s;
+  };
+  Sampled best = sampleAndSmooth(nullptr);
+  if (best.folds > 0 && best.folds <= kMaxFoldsResampled) {
+    // A few folds left: the patches they lie in are sampled again with mean-value coordinates
+    // inside (their sides where they were, so the neighbours do not change), kept if that
+    // folds less. (Many folds come from the layout, not the map: a second pass would cost
+    // a whole sampling and smoothing for nothing.)
+    std::vector<int> folded;
+    folds(best.mesh, &folded);
+    std::vector<char> meanValue(layout.patches.size(), 0);
+    for (int q : folded)
+      if (q < int(best.mesh.quadPatch.size()) && best.mesh.quadPatch[q] >= 0) meanValue[best.mesh.quadPatch[q]] = 1;
+    Sampled again = sampleAndSmooth(&meanValue);
+    if (again.folds < best.folds) best = std::move(again), r.foldsResampled = true;
+  }
+  r.mesh = std::move(best.mesh);
+  r.sampledPositions = std::move(best.positions);
+  r.smoothing = best.smoothing;
+  r.dissolvedVertices = best.dissolved;
   r.report = checkQuadMesh(r.mesh);
   if (!r.report.manifold)
     throw std::runtime_error("the quad mesh came out non-manifold (" + r.report.problem +
