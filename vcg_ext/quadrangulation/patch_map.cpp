@@ -206,7 +206,7 @@ int PatchMap::cellCoordinate(double value, int axis) const {
   return t >= gridN_ ? gridN_ - 1 : int(t);
 }
 
-Vec3 PatchMap::pointAt(const Vec2& x, int* triangle) const {
+Vec3 PatchMap::pointAt(const Vec2& x) const {
   int best = -1;
   double bestMin = -1e300, b0 = 0, b1 = 0, b2 = 0;
   // Barycentric coordinates of x in triangle k (of triangles_); false if it is degenerate.
@@ -230,7 +230,6 @@ Vec3 PatchMap::pointAt(const Vec2& x, int* triangle) const {
       double l0, l1, l2;
       const int k = cellTriangles_[i];
       if (!locate(k, l0, l1, l2) || !(std::min({l0, l1, l2}) >= 0)) continue;  // NaN too, as the scan
-      if (triangle) *triangle = triangles_[k];
       return pointOn(triangles_[k], l0, l1, l2);
     }
   }
@@ -250,7 +249,6 @@ Vec3 PatchMap::pointAt(const Vec2& x, int* triangle) const {
     const double sum = b0 + b1 + b2;
     b0 /= sum, b1 /= sum, b2 /= sum;
   }
-  if (triangle) *triangle = best;
   return pointOn(best, b0, b1, b2);
 }
 

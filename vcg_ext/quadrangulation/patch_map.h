@@ -43,7 +43,7 @@ public:
   /// rounding or a degenerate patch left not quite covering its rectangle) is put on the
   /// nearest one and counted in outsidePoints(); throws std::runtime_error if the patch has no
   /// usable triangle.
-  Vec3 pointAt(const Vec2& uv, int* triangle = nullptr) const;  ///< triangle: the layout triangle it lies on
+  Vec3 pointAt(const Vec2& uv) const;
   /// How many pointAt() queries fell farther than rounding outside the map.
   int outsidePoints() const { return outside_; }
 

@@ -53,7 +53,7 @@ std::vector<Vec3> samplesByParameter(const std::vector<Vec3>& poly, const std::v
 }
 
 /// The inner points (i, j), 0 < i < W, 0 < j < H, of a patch's grid, row by row.
-std::vector<Vec3> innerGrid(const PatchMap& map, int W, int H, const PatchLayout&) {
+std::vector<Vec3> innerGrid(const PatchMap& map, int W, int H) {
   std::vector<Vec3> out;
   out.reserve(std::max(0, (W - 1) * (H - 1)));
   for (int j = 1; j < H; ++j)
@@ -292,7 +292,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
                                  (*meanValuePatches)[ps.layoutPatch];
       auto map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
                                             [&](int k) { return loopUv[k]; }, faceDirections && !keepMeanValue ? &guide : nullptr);
-      std::vector<Vec3> inner = innerGrid(*map, W, H, layout);
+      std::vector<Vec3> inner = innerGrid(*map, W, H);
       GuidedMap kind = map->guided();
       if (kind == GuidedMap::Aligned || kind == GuidedMap::Blended) {
         // A grid the aligned map folds in space (a quad turned against the surface at a
@@ -319,7 +319,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         if (alignedFolds > 0) {
           auto plain = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
                                                   [&](int k) { return loopUv[k]; });
-          std::vector<Vec3> plainInner = innerGrid(*plain, W, H, layout);
+          std::vector<Vec3> plainInner = innerGrid(*plain, W, H);
           if (foldedQuads(plainInner) < alignedFolds)
             map = std::move(plain), inner = std::move(plainInner), kind = GuidedMap::MeanValue;
         }

@@ -141,28 +141,41 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     SmoothingReport smoothing;
     int dissolved = 0, folds = 0;
   };
+  auto smoothSampled = [&](Sampled& s, const SmoothingOptions& how) {
+    s.mesh.positions = s.positions;
+    s.smoothing = smoothQuadMesh(s.mesh, layout.positions, layout.triangles, how);
+    s.folds = field ? folds(s.mesh) : 0;
+  };
   auto sampleAndSmooth = [&](const std::vector<char>* meanValue) {
     Sampled s;
     s.mesh = samplePatches(layout, r.graph, r.lengths, field, meanValue);
     s.dissolved = dissolveTwoValentVertices(s.mesh);
     s.positions = s.mesh.positions;
-    s.smoothing = smoothQuadMesh(s.mesh, layout.positions, layout.triangles, smoothing);
-    s.folds = field ? folds(s.mesh) : 0;
+    smoothSampled(s, smoothing);
     return s;
   };
   Sampled best = sampleAndSmooth(nullptr);
   if (best.folds > 0 && best.folds <= kMaxFoldsResampled) {
-    // A few folds left: the patches they lie in are sampled again with mean-value coordinates
-    // inside (their sides where they were, so the neighbours do not change), kept if that
-    // folds less. (Many folds come from the layout, not the map: a second pass would cost
-    // a whole sampling and smoothing for nothing.)
+    // A few folds left. Smoothing towards the field can leave a fold the neighbours' average
+    // would have undone: the plain smoothing first, on the same samples. Then the patches the
+    // folds lie in sampled again with mean-value coordinates inside (their sides where they
+    // were, so the neighbours do not change). The fewest folds win, ties the first. (Many
+    // folds come from the layout, not the map: more passes would cost a whole sampling and
+    // smoothing each for nothing.)
+    Sampled plain = best;
+    SmoothingOptions laplacian = options.smoothing;
+    laplacian.triangleDirections.clear();
+    smoothSampled(plain, laplacian);
+    if (plain.folds < best.folds) best = std::move(plain), r.foldsResmoothed = true;
+  }
+  if (best.folds > 0 && best.folds <= kMaxFoldsResampled) {
     std::vector<int> folded;
     folds(best.mesh, &folded);
     std::vector<char> meanValue(layout.patches.size(), 0);
     for (int q : folded)
       if (q < int(best.mesh.quadPatch.size()) && best.mesh.quadPatch[q] >= 0) meanValue[best.mesh.quadPatch[q]] = 1;
     Sampled again = sampleAndSmooth(&meanValue);
-    if (again.folds < best.folds) best = std::move(again), r.foldsResampled = true;
+    if (again.folds < best.folds) best = std::move(again), r.foldsResampled = true, r.foldsResmoothed = false;
   }
   r.mesh = std::move(best.mesh);
   r.sampledPositions = std::move(best.positions);

@@ -31,8 +31,10 @@ struct QuadrangulationResult {
   /// Inner vertices in only two quads, which were merged into one (dissolveTwoValentVertices).
   int dissolvedVertices = 0;
   SmoothingReport smoothing;
-  /// With a field, a few quads were left folded after smoothing and their patches were
-  /// sampled again with mean-value coordinates inside, which folded fewer.
+  /// With a field, a few quads were left folded after smoothing towards it: the plain
+  /// smoothing folded fewer (foldsResmoothed), or their patches sampled again with mean-value
+  /// coordinates inside did (foldsResampled).
+  bool foldsResmoothed = false;
   bool foldsResampled = false;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
