@@ -82,6 +82,14 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.dissolved_vertices", r.dissolvedVertices);
   stats.set("quad.outside_points", qs.mesh.outsidePoints);
   stats.set("params.param", param);
+  stats.set("quad.field_folds_resmoothed", r.foldsResmoothed);
+  stats.set("quad.field_folds_resampled", r.foldsResampled);
+  stats.set("quad.field_folds_without_field", r.foldsWithoutField);
+  if (r.foldsResmoothed || r.foldsResampled || r.foldsWithoutField)
+    progress(quiet, std::string("folds left by the field-aligned pass: ") +
+                        (r.foldsWithoutField ? "the pass without the field folded fewer and was kept"
+                         : r.foldsResampled  ? "their patches were sampled again with mean-value coordinates"
+                                             : "the plain smoothing folded fewer and was kept"));
   stats.set("quad.field_aligned_patches", qs.mesh.alignedPatches);
   stats.set("quad.field_blended_patches", qs.mesh.blendedPatches);
   stats.set("quad.field_mean_value_patches", qs.mesh.meanValuePatches);

@@ -177,6 +177,16 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     Sampled again = sampleAndSmooth(&meanValue);
     if (again.folds < best.folds) best = std::move(again), r.foldsResampled = true, r.foldsResmoothed = false;
   }
+  if (best.folds > 0 && best.folds <= kMaxFoldsResampled) {
+    // Last, the whole pass without the field (mean-value maps, arc-length sides, plain
+    // smoothing): with a field the stage never folds more than without one at the same size.
+    Sampled plain;
+    plain.mesh = samplePatches(layout, r.graph, r.lengths);
+    plain.dissolved = dissolveTwoValentVertices(plain.mesh);
+    plain.positions = plain.mesh.positions;
+    smoothSampled(plain, options.smoothing);
+    if (plain.folds < best.folds) best = std::move(plain), r.foldsWithoutField = true;
+  }
   r.mesh = std::move(best.mesh);
   r.sampledPositions = std::move(best.positions);
   r.smoothing = best.smoothing;
