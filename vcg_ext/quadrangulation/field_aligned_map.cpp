@@ -98,16 +98,20 @@ FieldAlignedResult solveFieldAlignedMap(const FieldAlignedProblem& pb) {
       }
     }
   }
-  // Which quarter turn of the combed cross is the u axis: the one closest to the starting
-  // map's u gradient, over the whole patch (area-weighted).
+  // Which quarter turn of the combed cross is the u axis: the one that best agrees with the
+  // constrained edges (the boundary: along side 0, u grows and v stays, and so on), each edge
+  // e of the surface going to Δ = start[b] − start[a], so that e·d1 ~ Δu and e·d2 ~ Δv.
   std::array<double, 4> score{0, 0, 0, 0};
-  for (int t = 0; t < nt; ++t) {
-    Vec3 g = Vec3::Zero();
-    for (int i = 0; i < 3; ++i) g += pb.start[pb.triangles[t][i]].x() * frame[t].gradient[i];
-    const double l = g.norm();
-    if (!(l > 0)) continue;
-    for (int k = 0; k < 4; ++k) score[k] += frame[t].area * quarterTurns(combed[t], frame[t].normal, k).dot(g / l);
-  }
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = pb.triangles[t][i], b = pb.triangles[t][(i + 1) % 3];
+      if (pb.constraint[a] == FieldAlignedProblem::Free || pb.constraint[b] == FieldAlignedProblem::Free) continue;
+      const Vec3 e = pb.corners[t][(i + 1) % 3] - pb.corners[t][i];
+      const Vec2 delta = pb.start[b] - pb.start[a];
+      for (int k = 0; k < 4; ++k)
+        score[k] += quarterTurns(combed[t], frame[t].normal, k).dot(e) * delta.x() +
+                    quarterTurns(combed[t], frame[t].normal, k + 1).dot(e) * delta.y();
+    }
   int turn = 0;
   for (int k = 1; k < 4; ++k)
     if (score[k] > score[turn]) turn = k;

@@ -52,8 +52,8 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
     loopWedge_.push_back(wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k])));
     uv_[loopWedge_.back()] = boundaryUv(k);
   }
-  mapInterior();
   if (guide && guide->faceDirections) alignToField(*guide, halfEdges);
+  else mapInterior();
   indexTriangles();
 }
 
@@ -74,7 +74,8 @@ void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<st
       if (it == index.end()) {
         it = index.emplace(x, int(wedgeOf.size())).first;
         wedgeOf.push_back(x);
-        pb.start.push_back(uv_.at(x));
+        auto known = uv_.find(x);  // the boundary's; inside, the solve needs no start
+        pb.start.push_back(known != uv_.end() ? known->second : Vec2::Zero());
         pb.constraint.push_back(FieldAlignedProblem::Free);
       }
       w[c] = it->second;
@@ -102,21 +103,28 @@ void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<st
   for (const int x : loopWedge_)
     if (++seen[x] > 1) pb.constraint[index.at(x)] = FieldAlignedProblem::Fixed;
   const FieldAlignedResult aligned = solveFieldAlignedMap(pb);
+  if (aligned.solved && foldedTriangles(pb.triangles, aligned.uv, 0) == 0) {
+    guided_ = GuidedMap::Aligned;
+    for (std::size_t w = 0; w < wedgeOf.size(); ++w) uv_[wedgeOf[w]] = aligned.uv[w];
+    return;
+  }
+  // It folds (or failed): the mean-value map, and the aligned one blended back towards it
+  // until it folds no more than the mean-value map itself (which rounding can leave on slivers).
+  mapInterior();
   guided_ = GuidedMap::MeanValue;
   if (!aligned.solved) return;
-  // The aligned map where it does not fold, else blended back towards the mean-value map.
-  // (Counted against the mean-value map's own, which rounding can leave on slivers.)
-  const int before = foldedTriangles(pb.triangles, pb.start, 0);
-  std::vector<Vec2> uv = aligned.uv;
-  for (double share : {1.0, 0.5, 0.25, 0.125, 0.0}) {
-    for (std::size_t w = 0; w < uv.size(); ++w) uv[w] = share * aligned.uv[w] + (1 - share) * pb.start[w];
-    if (share == 0.0) return;
+  std::vector<Vec2> meanValue(wedgeOf.size());
+  for (std::size_t w = 0; w < wedgeOf.size(); ++w) meanValue[w] = uv_.at(wedgeOf[w]);
+  const int before = foldedTriangles(pb.triangles, meanValue, 0);
+  std::vector<Vec2> uv(wedgeOf.size());
+  for (double share : {1.0, 0.5, 0.25, 0.125}) {
+    for (std::size_t w = 0; w < uv.size(); ++w) uv[w] = share * aligned.uv[w] + (1 - share) * meanValue[w];
     if (foldedTriangles(pb.triangles, uv, 0) <= before) {
       guided_ = share == 1.0 ? GuidedMap::Aligned : GuidedMap::Blended;
-      break;
+      for (std::size_t w = 0; w < uv.size(); ++w) uv_[wedgeOf[w]] = uv[w];
+      return;
     }
   }
-  for (std::size_t w = 0; w < uv.size(); ++w) uv_[wedgeOf[w]] = uv[w];
 }
 
 void PatchMap::mapInterior() {

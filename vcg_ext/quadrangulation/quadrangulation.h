@@ -36,7 +36,8 @@ struct QuadrangulationResult {
   /// coordinates inside did (foldsResampled).
   bool foldsResmoothed = false;
   bool foldsResampled = false;
-  /// ... or, still folded, the pass made without the field folded fewer and was kept.
+  /// ... or, still folded, the pass (or, last, the whole stage) made without the field folded
+  /// fewer and was kept.
   bool foldsWithoutField = false;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
