@@ -157,7 +157,7 @@ FilterOutcome quadrangulate(MeshDocument& md, MeshModel& mm, const RichParameter
   const TraceStepResult t = computeTraceStep(mesh, s.field, s.analysis, tp, progress.sub(2, 35));
   const LayoutStepResult l =
       computeLayoutStep(mesh, s.field, s.analysis, t.trace, lp, progress.sub(35, 70));
-  const QuadStepResult q = computeQuadStep(mesh, l.layout, lp, qp, progress.sub(70, 100));
+  const QuadStepResult q = computeQuadStep(mesh, s.field, l.layout, lp, qp, progress.sub(70, 100));
   storeQuadStep(md, q);
   FilterOutcome o;
   addLines(o, describeTraceStep(t, false));
@@ -189,7 +189,7 @@ FilterOutcome allSteps(MeshDocument& md, MeshModel& mm, const RichParameterList&
   const LayoutStepResult l = computeLayoutStep(mesh, field, analysis, t.trace, lp,
                                                progress.sub(kAllTraceEnd, kAllLayoutEnd));
   const QuadStepResult q =
-      computeQuadStep(mesh, l.layout, lp, qp, progress.sub(kAllLayoutEnd, 100));
+      computeQuadStep(mesh, field, l.layout, lp, qp, progress.sub(kAllLayoutEnd, 100));
   storeFieldStep(mm, f);
   storeTraceStep(md, mm, f.converted, t);
   storeLayoutStep(md, mm, f.converted, l);

@@ -19,7 +19,7 @@ const fcql::QuadrangulationOptions& options() {
 
 }  // namespace
 
-QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult& layout,
+QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field, const LayoutResult& layout,
                                const LayoutParameters& layoutParams,
                                const QuadParameters& params, const Progress& progress) {
   const auto start = Clock::now();
@@ -29,6 +29,7 @@ QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult
   fcql::QuadrangulationOptions stage = options();
   stage.targetEdgeLength = r.targetEdgeLength;
   stage.ilpTimeLimit = layoutParams.ilpTimeLimit;
+  stage.fieldDirections = field.u;
   r.quad = fcql::quadrangulate(layout.patches, stage);
   r.layoutPatches = int(layout.patches.patches.size());
   if (r.quad.report.manifold) r.baseComplexPatches = fcql::measureBaseComplex(r.quad.mesh).patches;

@@ -36,9 +36,10 @@ struct QuadStepResult {
   double seconds = 0;
 };
 
-/// `mesh` is the input surface (for the bounding-box diagonal), `layout` its patch layout.
+/// `mesh` is the input surface (for the bounding-box diagonal), `field` its cross field (each
+/// patch is mapped onto its rectangle along it, as `fcql run` does), `layout` its patch layout.
 /// Throws std::runtime_error if the layout cannot be quadrangulated (e.g. invalid patches).
-QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const LayoutResult& layout,
+QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field, const LayoutResult& layout,
                                const LayoutParameters& layoutParams,
                                const QuadParameters& params, const Progress& progress);
 

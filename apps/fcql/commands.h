@@ -83,6 +83,9 @@ struct QuadStage {
 /// The target quad edge of --scale or --target-faces on `mesh`; throws UsageError if it asks for
 /// more quads than the quad stage can hold (saying which value is the finest allowed).
 double quadTargetEdge(const SurfaceMesh& mesh, const CommandLine& cl);
+/// --param: "field" (default, each patch mapped field-aligned) or "mean-value" (the former
+/// map); throws UsageError otherwise.
+std::string quadParametrization(const CommandLine& cl);
 QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const CommandLine& cl, StatsJson& stats, bool quiet);
 
 int fieldCommand(int argc, char** argv);

@@ -23,6 +23,12 @@ constexpr long kMaxQuads = 20000000;
 
 }  // namespace
 
+std::string quadParametrization(const CommandLine& cl) {
+  const std::string param = cl.value("param", "field");
+  if (param != "field" && param != "mean-value") throw UsageError("--param must be field or mean-value, not " + param);
+  return param;
+}
+
 double quadTargetEdge(const SurfaceMesh& mesh, const CommandLine& cl) {
   double area = 0;
   for (int f = 0; f < mesh.numFaces(); ++f) area += mesh.faceArea(f);
@@ -57,6 +63,8 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   options.smoothing.sharpAngleDeg = cl.number("sharp-angle", 35.0, 0.0, 180.0);
   options.maxDeviation = cl.number("max-deviation", 0.01, 0.0, 1.0);
   options.maxQuads = kMaxQuads;
+  const std::string param = quadParametrization(cl);
+  if (param == "field") options.fieldDirections = fs.field.u;
   QuadrangulationResult r = quadrangulate(ls.patches, options);
   for (const std::string& note : refinementNotes(r, options)) progress(quiet, note);
   qs.graph = std::move(r.graph);
@@ -74,6 +82,22 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.polygon_patches", r.polygonPatches);
   stats.set("quad.dissolved_vertices", r.dissolvedVertices);
   stats.set("quad.outside_points", qs.mesh.outsidePoints);
+  stats.set("params.param", param);
+  stats.set("quad.field_folds_resmoothed", r.foldsResmoothed);
+  stats.set("quad.field_folds_resampled", r.foldsResampled);
+  stats.set("quad.field_folds_without_field", r.foldsWithoutField);
+  if (r.foldsResmoothed || r.foldsResampled || r.foldsWithoutField)
+    progress(quiet, std::string("folds left by the field-aligned pass: ") +
+                        (r.foldsWithoutField ? "the pass without the field folded fewer and was kept"
+                         : r.foldsResampled  ? "their patches were sampled again with mean-value coordinates"
+                                             : "the plain smoothing folded fewer and was kept"));
+  stats.set("quad.field_aligned_patches", qs.mesh.alignedPatches);
+  stats.set("quad.field_blended_patches", qs.mesh.blendedPatches);
+  stats.set("quad.field_mean_value_patches", qs.mesh.meanValuePatches);
+  if (qs.mesh.blendedPatches + qs.mesh.meanValuePatches > 0)
+    progress(quiet, "field-aligned maps: " + std::to_string(qs.mesh.alignedPatches) + " patches aligned, " +
+                        std::to_string(qs.mesh.blendedPatches) + " blended towards mean-value coordinates and " +
+                        std::to_string(qs.mesh.meanValuePatches) + " left to them, where the aligned map folded");
   if (qs.mesh.outsidePoints > 0)
     progress(quiet, "warning: " + std::to_string(qs.mesh.outsidePoints) +
                         " grid points fell outside their patch map (degenerate patches): their quads are distorted");
@@ -139,7 +163,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
 int quadCommand(int argc, char** argv) {
   CommandLine cl(argc, argv, 2,
                  {"field", "sharp-angle", "field-scale", "out", "example", "alpha", "k", "phi", "threads", "ilp-time-limit", "ilp-stall", "completion-trials", "scale",
-                  "target-faces", "smooth", "max-deviation"},
+                  "target-faces", "smooth", "max-deviation", "param"},
                  {"quiet"});
   requireOutputDir(cl);
   if (cl.has("scale") && cl.has("target-faces")) throw UsageError("give --scale or --target-faces, not both");
@@ -150,6 +174,7 @@ int quadCommand(int argc, char** argv) {
   cl.integer("target-faces", 1000, 1, int(kMaxQuads));
   cl.integer("smooth", 5, 0, 1000);
   cl.number("max-deviation", 0.01, 0.0, 1.0);
+  quadParametrization(cl);
   StatsJson stats;
   auto start = std::chrono::steady_clock::now();
   // A quad count out of reach fails as soon as the mesh is loaded, not after the layout.

@@ -16,6 +16,10 @@ struct QuadMesh {
   /// Grid points that fell outside their patch's map and were put on the nearest mapped
   /// triangle (0 unless a patch map is degenerate; its quads are then distorted).
   int outsidePoints = 0;
+  /// With a cross field (samplePatches' faceDirections): layout patches mapped field-aligned,
+  /// blended back towards mean-value coordinates because the aligned map folded, or left to
+  /// mean-value coordinates (the blend folded too, or the system failed).
+  int alignedPatches = 0, blendedPatches = 0, meanValuePatches = 0;
 
   int numVertices() const { return int(positions.size()); }
   int numQuads() const { return int(quads.size()); }

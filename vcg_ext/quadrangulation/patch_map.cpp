@@ -1,5 +1,7 @@
 #include "quadrangulation/patch_map.h"
 
+#include "quadrangulation/field_aligned_map.h"
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
@@ -21,7 +23,8 @@ int PatchMap::wedge(int t, int c) const {
 }
 
 PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
-                   const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv)
+                   const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
+                   const PatchGuide* guide)
     : layout_(layout), patch_(patch), triangles_(triangles) {
   for (int t : triangles_)
     for (int c = 0; c < 3; ++c) {
@@ -45,10 +48,83 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
       unite(t * 3 + (i + 1) % 3, t2 * 3 + cornerIn(t2, b));
     }
   const PatchReport& rep = layout.patches[patch];
-  for (int k = 0; k < int(rep.loop.size()); ++k)
-    uv_[wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k]))] = boundaryUv(k);
-  mapInterior();
+  for (int k = 0; k < int(rep.loop.size()); ++k) {
+    loopWedge_.push_back(wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k])));
+    uv_[loopWedge_.back()] = boundaryUv(k);
+  }
+  if (guide && guide->faceDirections) alignToField(*guide, halfEdges);
+  else mapInterior();
   indexTriangles();
+}
+
+Vec2 PatchMap::loopImage(int k) const { return uv_.at(loopWedge_.at(k)); }
+
+void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges) {
+  FieldAlignedProblem pb;
+  std::unordered_map<int, int> index;  // wedge -> its number in pb
+  std::vector<int> wedgeOf;
+  std::unordered_map<int, int> local;  // layout triangle -> its number in pb
+  for (int k = 0; k < int(triangles_.size()); ++k) local[triangles_[k]] = k;
+  for (int t : triangles_) {
+    std::array<int, 3> w;
+    std::array<Vec3, 3> p;
+    for (int c = 0; c < 3; ++c) {
+      const int x = wedge(t, c);
+      auto it = index.find(x);
+      if (it == index.end()) {
+        it = index.emplace(x, int(wedgeOf.size())).first;
+        wedgeOf.push_back(x);
+        auto known = uv_.find(x);  // the boundary's; inside, the solve needs no start
+        pb.start.push_back(known != uv_.end() ? known->second : Vec2::Zero());
+        pb.constraint.push_back(FieldAlignedProblem::Free);
+      }
+      w[c] = it->second;
+      p[c] = layout_.positions[layout_.triangles[t][c]];
+    }
+    pb.triangles.push_back(w);
+    pb.corners.push_back(p);
+    const int face = layout_.originalFace[t];
+    pb.direction.push_back(face >= 0 && face < int(guide.faceDirections->size()) ? (*guide.faceDirections)[face] : Vec3::Zero());
+    std::array<int, 3> nb{-1, -1, -1};
+    for (int i = 0; i < 3; ++i) {
+      if (layout_.edgeCurve[t][i] != -1) continue;
+      auto it = halfEdges.find(edgeKey(layout_.triangles[t][(i + 1) % 3], layout_.triangles[t][i]));
+      if (it == halfEdges.end()) continue;
+      auto jt = local.find(it->second / 3);
+      if (jt != local.end()) nb[i] = jt->second;
+    }
+    pb.neighbours.push_back(nb);
+  }
+  for (const int x : loopWedge_) pb.constraint[index.at(x)] = FieldAlignedProblem::Fixed;
+  for (int k = 0; k < int(guide.loopConstraint.size()) && k < int(loopWedge_.size()); ++k)
+    pb.constraint[index.at(loopWedge_[k])] = guide.loopConstraint[k];
+  // A wedge the loop meets twice (a cut) is fixed.
+  std::unordered_map<int, int> seen;
+  for (const int x : loopWedge_)
+    if (++seen[x] > 1) pb.constraint[index.at(x)] = FieldAlignedProblem::Fixed;
+  const FieldAlignedResult aligned = solveFieldAlignedMap(pb);
+  if (aligned.solved && foldedTriangles(pb.triangles, aligned.uv, 0) == 0) {
+    guided_ = GuidedMap::Aligned;
+    for (std::size_t w = 0; w < wedgeOf.size(); ++w) uv_[wedgeOf[w]] = aligned.uv[w];
+    return;
+  }
+  // It folds (or failed): the mean-value map, and the aligned one blended back towards it
+  // until it folds no more than the mean-value map itself (which rounding can leave on slivers).
+  mapInterior();
+  guided_ = GuidedMap::MeanValue;
+  if (!aligned.solved) return;
+  std::vector<Vec2> meanValue(wedgeOf.size());
+  for (std::size_t w = 0; w < wedgeOf.size(); ++w) meanValue[w] = uv_.at(wedgeOf[w]);
+  const int before = foldedTriangles(pb.triangles, meanValue, 0);
+  std::vector<Vec2> uv(wedgeOf.size());
+  for (double share : {1.0, 0.5, 0.25, 0.125}) {
+    for (std::size_t w = 0; w < uv.size(); ++w) uv[w] = share * aligned.uv[w] + (1 - share) * meanValue[w];
+    if (foldedTriangles(pb.triangles, uv, 0) <= before) {
+      guided_ = share == 1.0 ? GuidedMap::Aligned : GuidedMap::Blended;
+      for (std::size_t w = 0; w < uv.size(); ++w) uv_[wedgeOf[w]] = uv[w];
+      return;
+    }
+  }
 }
 
 void PatchMap::mapInterior() {

@@ -1,6 +1,8 @@
 // PatchMap: a layout patch (a disk cut out of the layout's refined triangle mesh) mapped onto
 // a rectangle with mean-value coordinates (Floater), given where its boundary goes. Copies of
-// a vertex that the boundary meets twice (a cut through a cylinder) are kept apart.
+// a vertex that the boundary meets twice (a cut through a cylinder) are kept apart. With a
+// PatchGuide, the mean-value map is then replaced by a field-aligned one (field_aligned_map.h)
+// unless that folds: it is then blended back towards the mean-value map until it does not.
 #pragma once
 
 #include "layout/patch_layout.h"
@@ -13,13 +15,29 @@
 
 namespace fcql {
 
+/// What the field-aligned map of a patch needs: the cross field (direction 0 per face of the
+/// input, indexed by PatchLayout::originalFace), and per position of the patch's boundary loop
+/// whether it is fixed or slides along its side (FieldAlignedProblem::Constraint; empty: all fixed).
+struct PatchGuide {
+  const std::vector<Vec3>* faceDirections = nullptr;
+  std::vector<std::int8_t> loopConstraint;
+};
+
+/// How a guided map came out.
+enum class GuidedMap { None, Aligned, Blended, MeanValue };
+
 class PatchMap {
 public:
   /// `boundaryUv(k)` gives the image of the boundary loop position k of the patch.
   /// `halfEdges` maps (a,b) of the layout triangles to t*3+i. Throws std::runtime_error if the
   /// linear system cannot be solved.
   PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
-           const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv);
+           const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
+           const PatchGuide* guide = nullptr);
+
+  /// The image of boundary loop position k (moved along its side if it slides).
+  Vec2 loopImage(int k) const;
+  GuidedMap guided() const { return guided_; }
 
   /// The surface point whose image is `uv`. A `uv` outside every mapped triangle (a map that
   /// rounding or a degenerate patch left not quite covering its rectangle) is put on the
@@ -35,6 +53,8 @@ private:
   int wedge(int t, int c) const;
   /// The images of the interior wedges (mean-value coordinates), the boundary's being set.
   void mapInterior();
+  /// The field-aligned map replacing the mean-value one (see PatchGuide).
+  void alignToField(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges);
   /// Per triangle its corners' images, and the grid over them that pointAt() searches.
   void indexTriangles();
   int cellCoordinate(double value, int axis) const;
@@ -46,6 +66,8 @@ private:
   mutable std::vector<int> parent_;
   mutable int outside_ = 0;
   std::unordered_map<int, Vec2> uv_;
+  std::vector<int> loopWedge_;
+  GuidedMap guided_ = GuidedMap::None;
   // Per triangle (in triangles_' order) its corners' images, and a grid of gridN_ × gridN_
   // cells over them listing the triangles whose box meets each cell.
   std::vector<std::array<Vec2, 3>> corners_;

@@ -1,5 +1,6 @@
 #include "quadrangulation/patch_sampling.h"
 
+#include "quadrangulation/field_aligned_map.h"
 #include "quadrangulation/patch_map.h"
 
 #include <algorithm>
@@ -38,6 +39,28 @@ Vec2 sideUv(int k, double c, double W, double H) {
   }
 }
 
+/// Points where a monotone parameter t (per polyline point, from 0 to n) crosses 1..n−1.
+std::vector<Vec3> samplesByParameter(const std::vector<Vec3>& poly, const std::vector<double>& t, int n) {
+  std::vector<Vec3> out;
+  std::size_t seg = 1;
+  for (int k = 1; k < n; ++k) {
+    while (seg + 1 < poly.size() && t[seg] < k) ++seg;
+    const double len = t[seg] - t[seg - 1];
+    const double s = len > 0 ? (k - t[seg - 1]) / len : 0;
+    out.push_back(poly[seg - 1] + (poly[seg] - poly[seg - 1]) * std::clamp(s, 0.0, 1.0));
+  }
+  return out;
+}
+
+/// The inner points (i, j), 0 < i < W, 0 < j < H, of a patch's grid, row by row.
+std::vector<Vec3> innerGrid(const PatchMap& map, int W, int H) {
+  std::vector<Vec3> out;
+  out.reserve(std::max(0, (W - 1) * (H - 1)));
+  for (int j = 1; j < H; ++j)
+    for (int i = 1; i < W; ++i) out.push_back(map.pointAt(Vec2(i, j)));
+  return out;
+}
+
 }  // namespace
 
 std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p) {
@@ -70,7 +93,8 @@ std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p) {
   return uv;
 }
 
-QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths) {
+QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths,
+                       const std::vector<Vec3>* faceDirections, const std::vector<char>* meanValuePatches) {
   if (!lengths.inconsistentPatches.empty())
     throw std::runtime_error(std::to_string(lengths.inconsistentPatches.size()) +
                              " patches have opposite sides of different lengths (zero chains)");
@@ -82,6 +106,117 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
     q.positions.push_back(graph.nodePosition(layout, id));
     return nodeVertex[id] = q.numVertices() - 1;
   };
+  std::unordered_map<std::uint64_t, int> halfEdge;
+  for (int t = 0; t < int(layout.triangles.size()); ++t)
+    for (int i = 0; i < 3; ++i)
+      halfEdge[PatchMap::edgeKey(layout.triangles[t][i], layout.triangles[t][(i + 1) % 3])] = t * 3 + i;
+  std::vector<std::vector<int>> trianglesOf(layout.numPatches());
+  for (int t = 0; t < int(layout.triangles.size()); ++t) trianglesOf[layout.patch[t]].push_back(t);
+
+  // Per segment the parameter (0..n) of each of its layout vertices: by arc length, or with a
+  // field, where the field-aligned maps of the patches on its sides put it when its points may
+  // slide along the side (the mean of both sides, so that both sample it alike).
+  const int numSegments = int(graph.segments.size());
+  std::vector<std::vector<double>> parameter(numSegments);
+  for (int s = 0; s < numSegments; ++s) {
+    const LayoutSegment& seg = graph.segments[s];
+    const int n = s < int(lengths.segments.size()) ? lengths.segments[s] : 0;
+    std::vector<double> acc(seg.vertices.size(), 0);
+    for (std::size_t i = 1; i < seg.vertices.size(); ++i)
+      acc[i] = acc[i - 1] + (layout.positions[seg.vertices[i]] - layout.positions[seg.vertices[i - 1]]).norm();
+    for (double& a : acc) a = seg.length > 0 ? n * a / seg.length : 0;
+    if (!acc.empty()) acc.back() = n;
+    parameter[s] = std::move(acc);
+  }
+  // Calls visit(k, ss, i, loopPosition, sideCoordinate) for every layout vertex of every side of
+  // original patch p, i counting along the side, with the side coordinate its parameter gives.
+  auto forEachSideVertex = [&](int p, const auto& visit) {
+    const PatchSides& ps = graph.patches[p];
+    const int loopSize = int(layout.patches[ps.layoutPatch].loop.size());
+    for (int k = 0; k < 4; ++k) {
+      int offset = 0;
+      for (const SideSegment& ss : ps.sides[k]) {
+        const LayoutSegment& seg = graph.segments[ss.segment];
+        const int n = lengths.segments[ss.segment];
+        const int m = int(seg.vertices.size());
+        for (int i = 0; i < m; ++i) {
+          const int j = ss.reversed ? m - 1 - i : i;
+          const double local = ss.reversed ? n - parameter[ss.segment][j] : parameter[ss.segment][j];
+          visit(k, ss, i, m, (ss.loopStart + i) % loopSize, offset + local);
+        }
+        offset += n;
+      }
+    }
+  };
+  auto sideLengths = [&](int p) {
+    return std::pair<int, int>(lengths.sideLength(graph, p, 0), lengths.sideLength(graph, p, 1));
+  };
+  if (faceDirections) {
+    std::vector<char> shared(numSegments, 1);  // every patch on its sides is a whole layout patch
+    for (const auto& ps : graph.patches)
+      if (ps.active && !ps.original)
+        for (const auto& side : ps.sides)
+          for (const auto& ss : side) shared[ss.segment] = 0;
+    std::vector<std::vector<double>> sum(numSegments);
+    std::vector<std::vector<int>> count(numSegments);
+    for (int s = 0; s < numSegments; ++s) {
+      sum[s].assign(parameter[s].size(), 0);
+      count[s].assign(parameter[s].size(), 0);
+    }
+    for (int p = 0; p < int(graph.patches.size()); ++p) {
+      const PatchSides& ps = graph.patches[p];
+      if (!ps.active || !ps.original) continue;
+      const auto [W, H] = sideLengths(p);
+      const int loopSize = int(layout.patches[ps.layoutPatch].loop.size());
+      std::vector<Vec2> loopUv(loopSize, Vec2::Zero());
+      PatchGuide guide;
+      guide.faceDirections = faceDirections;
+      guide.loopConstraint.assign(loopSize, FieldAlignedProblem::Fixed);
+      forEachSideVertex(p, [&](int k, const SideSegment& ss, int i, int m, int pos, double c) {
+        loopUv[pos] = sideUv(k, c, W, H);
+        if (i > 0 && i + 1 < m && shared[ss.segment])
+          guide.loopConstraint[pos] = k % 2 == 0 ? FieldAlignedProblem::FixV : FieldAlignedProblem::FixU;
+      });
+      const PatchMap map(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge, [&](int k) { return loopUv[k]; },
+                         &guide);
+      if (map.guided() != GuidedMap::Aligned && map.guided() != GuidedMap::Blended) continue;
+      forEachSideVertex(p, [&](int k, const SideSegment& ss, int i, int m, int pos, double c) {
+        if (!(i > 0 && i + 1 < m && shared[ss.segment])) return;
+        const Vec2 uv = map.loopImage(pos);
+        const double moved = k == 0 ? uv.x() : k == 1 ? uv.y() : k == 2 ? W - uv.x() : H - uv.y();
+        int offset = 0;
+        for (const SideSegment& before : graph.patches[p].sides[k]) {
+          if (&before == &ss) break;
+          offset += lengths.segments[before.segment];
+        }
+        const int n = lengths.segments[ss.segment];
+        const double local = moved - offset;
+        const int j = ss.reversed ? m - 1 - i : i;
+        sum[ss.segment][j] += ss.reversed ? n - local : local;
+        ++count[ss.segment][j];
+      });
+    }
+    // The mean of both sides, blended back towards arc length until it increases strictly.
+    for (int s = 0; s < numSegments; ++s) {
+      const int m = int(parameter[s].size());
+      bool any = false;
+      std::vector<double> mean = parameter[s];
+      for (int j = 1; j + 1 < m; ++j)
+        if (count[s][j] > 0) mean[j] = sum[s][j] / count[s][j], any = true;
+      if (!any) continue;
+      for (double share : {1.0, 0.5, 0.25, 0.0}) {
+        std::vector<double> t(m);
+        for (int j = 0; j < m; ++j) t[j] = share * mean[j] + (1 - share) * parameter[s][j];
+        bool increasing = true;
+        for (int j = 1; j < m; ++j) increasing = increasing && t[j] > t[j - 1];
+        if (increasing || share == 0.0) {
+          parameter[s] = t;
+          break;
+        }
+      }
+    }
+  }
+
   // Samples of the segments used by the patches, made once and shared by both sides.
   std::vector<std::vector<int>> segmentSamples(graph.segments.size());
   std::vector<char> sampled(graph.segments.size(), 0);
@@ -91,18 +226,22 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       for (const auto& ss : side) {
         if (sampled[ss.segment]) continue;
         sampled[ss.segment] = 1;
-        for (const Vec3& p : samplesAlong(graph.segments[ss.segment].polyline, lengths.segments[ss.segment])) {
+        const LayoutSegment& seg = graph.segments[ss.segment];
+        const int n = lengths.segments[ss.segment];
+        std::vector<Vec3> points;
+        if (faceDirections && seg.vertices.size() >= 2) {
+          std::vector<Vec3> poly;
+          for (int v : seg.vertices) poly.push_back(layout.positions[v]);
+          points = samplesByParameter(poly, parameter[ss.segment], n);
+        } else {
+          points = samplesAlong(seg.polyline, n);
+        }
+        for (const Vec3& p : points) {
           q.positions.push_back(p);
           segmentSamples[ss.segment].push_back(q.numVertices() - 1);
         }
       }
   }
-  std::unordered_map<std::uint64_t, int> halfEdge;
-  for (int t = 0; t < int(layout.triangles.size()); ++t)
-    for (int i = 0; i < 3; ++i)
-      halfEdge[PatchMap::edgeKey(layout.triangles[t][i], layout.triangles[t][(i + 1) % 3])] = t * 3 + i;
-  std::vector<std::vector<int>> trianglesOf(layout.numPatches());
-  for (int t = 0; t < int(layout.triangles.size()); ++t) trianglesOf[layout.patch[t]].push_back(t);
   std::map<int, std::unique_ptr<PatchMap>> unitMaps;   // layout patch -> map onto [0,1]²
   std::map<int, std::unique_ptr<PatchMap>> chartMaps;  // polygon chart -> its map
 
@@ -144,13 +283,58 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
     }
     if (ps.original) {
       // The patch mapped onto its integer rectangle: grid lines meet the sides at their samples.
-      PatchMap map(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge, [&](int k) { return loopUv[k]; });
+      PatchGuide guide;
+      if (faceDirections) {  // the side vertices where the segments' parameters put them
+        guide.faceDirections = faceDirections;
+        forEachSideVertex(p, [&](int k, const SideSegment&, int, int, int pos, double c) { loopUv[pos] = sideUv(k, c, W, H); });
+      }
+      const bool keepMeanValue = meanValuePatches && ps.layoutPatch < int(meanValuePatches->size()) &&
+                                 (*meanValuePatches)[ps.layoutPatch];
+      auto map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
+                                            [&](int k) { return loopUv[k]; }, faceDirections && !keepMeanValue ? &guide : nullptr);
+      std::vector<Vec3> inner = innerGrid(*map, W, H);
+      GuidedMap kind = map->guided();
+      if (kind == GuidedMap::Aligned || kind == GuidedMap::Blended) {
+        // A grid the aligned map folds in space (a quad turned against the surface at a
+        // corner) where the mean-value map's does not fold as often: the mean-value grid.
+        auto position = [&](const std::vector<Vec3>& in, int i, int j) -> Vec3 {
+          if (i > 0 && j > 0 && i < W && j < H) return in[(j - 1) * (W - 1) + (i - 1)];
+          return q.positions[at(i, j)];
+        };
+        auto foldedQuads = [&](const std::vector<Vec3>& in) {
+          int n = 0;
+          for (int j = 0; j < H; ++j)
+            for (int i = 0; i < W; ++i) {
+              const std::array<Vec3, 4> c{position(in, i, j), position(in, i + 1, j), position(in, i + 1, j + 1),
+                                          position(in, i, j + 1)};
+              const Vec3 normal = (c[2] - c[0]).cross(c[3] - c[1]);
+              bool folded = false;
+              for (int k = 0; k < 4 && !folded; ++k)
+                folded = !((c[(k + 1) % 4] - c[k]).cross(c[(k + 3) % 4] - c[k]).dot(normal) > 0);
+              n += folded;
+            }
+          return n;
+        };
+        const int alignedFolds = foldedQuads(inner);
+        if (alignedFolds > 0) {
+          auto plain = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
+                                                  [&](int k) { return loopUv[k]; });
+          std::vector<Vec3> plainInner = innerGrid(*plain, W, H);
+          if (foldedQuads(plainInner) < alignedFolds)
+            map = std::move(plain), inner = std::move(plainInner), kind = GuidedMap::MeanValue;
+        }
+      }
       for (int j = 1; j < H; ++j)
         for (int i = 1; i < W; ++i) {
-          q.positions.push_back(map.pointAt(Vec2(i, j)));
+          q.positions.push_back(inner[(j - 1) * (W - 1) + (i - 1)]);
           at(i, j) = q.numVertices() - 1;
         }
-      q.outsidePoints += map.outsidePoints();
+      if (faceDirections) {
+        q.alignedPatches += kind == GuidedMap::Aligned;
+        q.blendedPatches += kind == GuidedMap::Blended;
+        q.meanValuePatches += kind == GuidedMap::MeanValue || kind == GuidedMap::None;
+      }
+      q.outsidePoints += map->outsidePoints();
     } else if (ps.chart >= 0) {
       // A part of a split patch: bilinear in its quad of the layout patch's polygon chart.
       auto& map = chartMaps[ps.chart];

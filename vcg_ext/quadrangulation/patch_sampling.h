@@ -20,6 +20,16 @@ namespace fcql {
 /// onto the k-th side of the square, by arc length.
 std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p);
 
-QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths);
+/// With `faceDirections` (the cross field's direction 0 per input face, indexed by
+/// PatchLayout::originalFace), each whole layout patch is mapped field-aligned instead
+/// (field_aligned_map.h): first with the points inside its sides free to slide along them,
+/// which gives each segment's parameter (the mean of its two sides', so that both sample it
+/// alike; arc length where a split part lies on it), then again with the sides fixed there.
+/// A map that folds is blended back towards mean-value coordinates (QuadMesh counts them).
+/// Layout patches marked in `meanValuePatches` keep mean-value coordinates inside, their sides
+/// sampled as with the field.
+QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths,
+                       const std::vector<Vec3>* faceDirections = nullptr,
+                       const std::vector<char>* meanValuePatches = nullptr);
 
 }  // namespace fcql

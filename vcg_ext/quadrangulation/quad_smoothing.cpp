@@ -210,6 +210,37 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
   }
 }
 
+/// Per vertex the sum (and number) of its corners in the rectangles aligned with the field that
+/// best fit its quads: centred at the quad's centre, sides along the cross directions closest to
+/// the quad's own two directions (midpoints of opposite edges), extents the quad's along them.
+/// The field and normal of a quad are those of the surface triangle nearest to its centre.
+void alignedTargets(const QuadMesh& quads, const ClosestPointIndex& index, const std::vector<Vec3>& normals,
+                    const std::vector<Vec3>& directions, std::vector<Vec3>& sum, std::vector<int>& count) {
+  std::fill(sum.begin(), sum.end(), Vec3::Zero());
+  std::fill(count.begin(), count.end(), 0);
+  const auto& P = quads.positions;
+  for (const auto& f : quads.quads) {
+    const Vec3 centre = (P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4;
+    const int t = index.closest(centre).triangle;
+    const Vec3& n = normals[t];
+    Vec3 d = directions[t] - n * n.dot(directions[t]);
+    if (!(d.norm() > 0) || n.isZero()) continue;
+    d.normalize();
+    const Vec3 eu = (P[f[1]] + P[f[2]] - P[f[0]] - P[f[3]]) / 2, ev = (P[f[2]] + P[f[3]] - P[f[0]] - P[f[1]]) / 2;
+    // The quarter turn of the cross closest to eu; the other axis is n × it.
+    Vec3 d1 = d;
+    double best = -std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k, d = n.cross(d))
+      if (d.dot(eu) > best) best = d.dot(eu), d1 = d;
+    const Vec3 d2 = n.cross(d1);
+    const double a = eu.dot(d1) / 2, b = ev.dot(d2) / 2;
+    if (!(a > 0) || !(b > 0)) continue;  // turned too far from the field to be fitted
+    const std::array<Vec3, 4> corner{centre - a * d1 - b * d2, centre + a * d1 - b * d2, centre + a * d1 + b * d2,
+                                     centre - a * d1 + b * d2};
+    for (int k = 0; k < 4; ++k) sum[f[k]] += corner[k], ++count[f[k]];
+  }
+}
+
 }  // namespace
 
 SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
@@ -277,17 +308,25 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   const QuadJacobian jacobian(quads);
   std::vector<Vec3> next(quads.positions);
   std::vector<double> before(quads.numQuads()), after;
+  const bool aligned = options.triangleDirections.size() == surfaceTriangles.size() && !surfaceTriangles.empty();
+  std::vector<Vec3> alignedSum(aligned ? nv : 0);
+  std::vector<int> alignedCount(aligned ? nv : 0);
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
     jacobian.all(before);
+    if (aligned) alignedTargets(quads, index, normals, options.triangleDirections, alignedSum, alignedCount);
     for (int v = 0; v < nv; ++v) {
       next[v] = previous[v];
       if (fixed[v] || neighbours[v].empty()) continue;
       Vec3 average = Vec3::Zero();
       for (int w : neighbours[v]) average += previous[w];
       average /= double(neighbours[v].size());
-      const ClosestPoint here = index.closest(previous[v]);
-      const Vec3& n = normals[here.triangle];
+      // Around a quad already folded or nearly flat, the neighbours' average alone, which
+      // unfolds; elsewhere the aligned rectangles' corners.
+      bool good = true;
+      for (int r : jacobian.quadsAround(v)) good = good && before[r] > kMinScaledJacobian;
+      if (aligned && good && alignedCount[v] > 0) average = alignedSum[v] / double(alignedCount[v]);
+      const Vec3& n = normals[index.closest(previous[v]).triangle];
       Vec3 move = (average - previous[v]) * options.step;
       move -= n * n.dot(move);
       next[v] = index.closest(previous[v] + move).point;
@@ -387,7 +426,7 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
     bool folds = false;
     jacobian.values(around, after);
     for (std::size_t i = 0; i < around.size() && !folds; ++i)
-      folds = before[i] > kMinScaledJacobian && after[i] <= kMinScaledJacobian;
+      folds = (before[i] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) || (before[i] > 0 && after[i] <= 0);
     if (folds) quads.positions[v] = smoothed;
     else ++count;
   }

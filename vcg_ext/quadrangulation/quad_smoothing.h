@@ -33,6 +33,11 @@ struct SmoothingOptions {
   int iterations = 5;
   double step = 0.5;          ///< 0..1: share of the way to the neighbours' average per round
   double sharpAngleDeg = 35;  ///< surface edges above this dihedral angle are kept
+  /// The cross field, one of its directions per surface triangle (tangent). Given, each vertex
+  /// moves towards the mean of the corners it would have in the rectangles aligned with the
+  /// field that best fit its quads (same centre, extents along the field's two directions)
+  /// instead of its neighbours' average: the quads turn to the field, across patch sides too.
+  std::vector<Vec3> triangleDirections;
 };
 
 struct SmoothingReport {

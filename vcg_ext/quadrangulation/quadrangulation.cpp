@@ -60,6 +60,80 @@ int dissolveTwoValentVertices(QuadMesh& mesh) {
 
 namespace {
 
+/// With a field, folds left after smoothing up to this many send their patches back to
+/// mean-value coordinates for a second pass.
+constexpr int kMaxFoldsResampled = 16;
+
+/// The smoothing options of a pass: with a field, towards it (per layout triangle, the field
+/// of the input face it lies in).
+SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOptions& options) {
+  SmoothingOptions smoothing = options.smoothing;
+  if (!options.fieldDirections.empty() && smoothing.triangleDirections.empty()) {
+    smoothing.triangleDirections.assign(layout.triangles.size(), Vec3::Zero());
+    for (std::size_t t = 0; t < layout.triangles.size(); ++t) {
+      const int f = layout.originalFace[t];
+      if (f >= 0 && f < int(options.fieldDirections.size())) smoothing.triangleDirections[t] = options.fieldDirections[f];
+    }
+  }
+  return smoothing;
+}
+
+/// Quads folded (scaled Jacobian <= 0), listed in `which` if given.
+int foldedQuads(const QuadMesh& m, std::vector<int>* which = nullptr) {
+  std::vector<double> j;
+  QuadJacobian(m).all(j);
+  int n = 0;
+  for (int q = 0; q < int(j.size()); ++q)
+    if (!(j[q] > 0)) {
+      ++n;
+      if (which) which->push_back(q);
+    }
+  return n;
+}
+
+/// With a field, a pass left with 1..kMaxFoldsResampled folded quads: other ways to sample and
+/// smooth the same side lengths, tried in turn; the first that folds fewer and that `accept`
+/// takes (given the result with it, which it may change, e.g. measure) replaces `r`.
+/// Smoothing towards the field can leave a fold the neighbours' average would have undone:
+/// the plain smoothing first, on the same samples. Then the patches the folds lie in sampled
+/// again with mean-value coordinates inside (their sides where they were, so the neighbours do
+/// not change), and last the whole pass without the field (mean-value maps, arc-length sides,
+/// plain smoothing). Returns whether one was taken. Run once, on the pass the refinements keep:
+/// more folds come from the layout, not the map, and would cost passes for nothing.
+template <class Accept>
+bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const QuadrangulationOptions& options,
+                 Accept&& accept) {
+  std::vector<int> folded;
+  const int before = foldedQuads(r.mesh, &folded);
+  if (options.fieldDirections.empty() || before == 0 || before > kMaxFoldsResampled) return false;
+  SmoothingOptions laplacian = options.smoothing;
+  laplacian.triangleDirections.clear();
+  // Candidate k: its mesh sampled and smoothed into a copy of r; taken if it folds fewer and is accepted.
+  auto attempt = [&](int k) {
+    QuadrangulationResult c = r;
+    c.restoredVertices = 0;
+    if (k > 0) {
+      std::vector<char> meanValue(layout.patches.size(), 0);
+      for (int q : folded)
+        if (q < int(r.mesh.quadPatch.size()) && r.mesh.quadPatch[q] >= 0) meanValue[r.mesh.quadPatch[q]] = 1;
+      c.mesh = k == 1 ? samplePatches(layout, r.graph, r.lengths, &options.fieldDirections, &meanValue)
+                      : samplePatches(layout, r.graph, r.lengths);
+      c.dissolvedVertices = dissolveTwoValentVertices(c.mesh);
+      c.sampledPositions = c.mesh.positions;
+    }
+    c.mesh.positions = c.sampledPositions;
+    c.smoothing = smoothQuadMesh(c.mesh, layout.positions, layout.triangles, k == 1 ? smoothingFor(layout, options) : laplacian);
+    if (!(foldedQuads(c.mesh) < before)) return false;
+    c.report = checkQuadMesh(c.mesh);
+    if (!c.report.manifold || !accept(c)) return false;
+    c.foldsResmoothed = k == 0;
+    c.foldsResampled = k == 1;
+    c.foldsWithoutField = k == 2;
+    r = std::move(c);
+    return true;
+  };
+  return attempt(0) || attempt(1) || attempt(2);
+}
 
 /// One pass of the stage at one target edge length; `surface` is the topology of the layout's
 /// triangles, which the quad mesh must have.
@@ -111,10 +185,10 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     ++r.splitRounds;
     r.lengths = solveLengths(r.graph);
   }
-  r.mesh = samplePatches(layout, r.graph, r.lengths);
+  r.mesh = samplePatches(layout, r.graph, r.lengths, options.fieldDirections.empty() ? nullptr : &options.fieldDirections);
   r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
   r.sampledPositions = r.mesh.positions;
-  r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, options.smoothing);
+  r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles, smoothingFor(layout, options));
   r.report = checkQuadMesh(r.mesh);
   if (!r.report.manifold)
     throw std::runtime_error("the quad mesh came out non-manifold (" + r.report.problem +
@@ -143,7 +217,10 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   if (options.maxRefinements < 0) throw std::invalid_argument("the number of refinements must be >= 0");
   const SurfaceTopology topology = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
   QuadrangulationResult r = quadrangulateOnce(layout, options, topology);
-  if (options.maxDeviation <= 0) return r;
+  if (options.maxDeviation <= 0) {
+    reduceFolds(r, layout, options, [](QuadrangulationResult&) { return true; });
+    return r;
+  }
   // The distance to the surface, measured on the layout's triangles (the input, cut), both
   // ways and densely (measureDeviation: an upper bound on the true distance decides): where it
   // may exceed the bound, sample again more finely. A chord of a curve deviates from it by
@@ -213,6 +290,32 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       // the last good mesh, which says why it is still too far from the surface.
       r.refinementProblem = "target edge " + std::to_string(finer.targetEdgeLength) + ": " + e.what();
       break;
+    }
+  }
+  {
+    // Folds left by the field-aligned pass the refinements kept: other ways to sample it,
+    // kept if they fold fewer and stay within the bound (or no farther than this one).
+    const double bound = std::max(limit, r.deviationBound);
+    reduceFolds(r, layout, options, [&](QuadrangulationResult& c) {
+      measure(c);
+      return c.deviationBound <= bound;
+    });
+    // Still folded: the whole stage without the field (its own refinements), kept if it folds
+    // fewer, so that the field never leaves more folds than the stage without it.
+    const int left = options.fieldDirections.empty() ? 0 : foldedQuads(r.mesh);
+    if (left > 0 && left <= kMaxFoldsResampled) {
+      QuadrangulationOptions plain = options;
+      plain.fieldDirections.clear();
+      try {
+        QuadrangulationResult without = quadrangulate(layout, plain);
+        if (foldedQuads(without.mesh) < left) {
+          r = std::move(without);
+          r.foldsWithoutField = true;
+          r.foldsResmoothed = r.foldsResampled = false;
+        }
+      } catch (const std::runtime_error&) {
+        // The stage without the field fails where this one did not: keep this one.
+      }
     }
   }
   r.deviationLimit = limit;

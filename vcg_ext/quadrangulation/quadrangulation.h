@@ -31,6 +31,14 @@ struct QuadrangulationResult {
   /// Inner vertices in only two quads, which were merged into one (dissolveTwoValentVertices).
   int dissolvedVertices = 0;
   SmoothingReport smoothing;
+  /// With a field, a few quads were left folded after smoothing towards it: the plain
+  /// smoothing folded fewer (foldsResmoothed), or their patches sampled again with mean-value
+  /// coordinates inside did (foldsResampled).
+  bool foldsResmoothed = false;
+  bool foldsResampled = false;
+  /// ... or, still folded, the pass (or, last, the whole stage) made without the field folded
+  /// fewer and was kept.
+  bool foldsWithoutField = false;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
   /// than maxDeviation from the surface (restoreSampledPositions).
@@ -50,6 +58,10 @@ struct QuadrangulationOptions {
   double ilpTimeLimit = 60;
   int maxSplitRounds = 8;       ///< rounds of zero-chain splits before giving up
   SmoothingOptions smoothing;   ///< iterations = 0 keeps the sampled positions
+  /// The cross field, direction 0 per input face (PatchLayout::originalFace indexes it): each
+  /// patch is then mapped onto its rectangle field-aligned (samplePatches). Empty: mean-value
+  /// coordinates, the boundary by arc length.
+  std::vector<Vec3> fieldDirections;
   /// Largest Hausdorff distance to the surface allowed, relative to the bounding-box diagonal
   /// (0: no check). Where the mesh may deviate more (measureDeviation's upper bound: curved
   /// parts finer than the target edge), the stage runs again with a smaller target edge
