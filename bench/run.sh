@@ -280,6 +280,58 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## Conforming layouts, field-aligned patches (issues 20 and 21, eighth session, 2026-12-03)
+
+Three changes, measured together on the same 2-core VM (Release, bench parameters, other
+builds running beside it, so times are ±30%):
+- **Completion** (`layout/layout_completion`): the ports still dangling after the solving cycle
+  get the separatrices in their way freed (those a barrier-free path between two dangling
+  ports meets tangentially, at most 16) and matched again by the solving cycle with weights
+  that put covering a port before length; a trial is kept only where propagation then leaves
+  fewer t-junctions (at most 24 trials, `--completion-trials`).
+- **Across to the border**: on a surface with a border, a port still dangling goes to the
+  border (or another dangling port) across the layout, crossing separatrices orthogonally,
+  before it is allowed to stop at a t-junction.
+- **Field-aligned patch maps** (`quadrangulation/field_aligned_map`, by a helper on branch
+  field-aligned-param): each patch is mapped onto its rectangle by least squares on the cross
+  field, the points inside its sides sliding along them, each segment sampled once for both
+  neighbours; mean-value coordinates where a map folds; the whole stage without the field where
+  that folds fewer quads or, at the asked size, meets the distance bound where the field-aligned
+  one does not (the dragon).
+
+*BC* is `quad.base_complex_patches`: the regions the quad mesh's own separatrices bound (equal
+to the layout's patches when the quad mesh keeps the layout's structure). Before: main at
+5e0f8e4 with the base-complex measure added; after: this table's run.
+
+| mesh | patches | t-junctions | BC | misaligned quads % | misaligned faces % | total s |
+|---|---:|---:|---:|---:|---:|---:|
+| aqua_center | 16 → 30 | 8 → 0 | 30 → 30 | 56.5 → 15.0 | 31.9 → 1.4 | 0.70 → 0.62 |
+| bunny (α 15, k 30) | 79 → 83 | 2 → 0 | 294 → 83 | 24.5 → 15.1 | 4.9 → 1.8 | 4.67 → 3.25 |
+| camelhead | 97 → 176 | 6 → 0 | 246 → 176 | 30.6 → 25.3 | 8.6 → 6.1 | 3.75 → 5.56 |
+| deckel | 191 → 206 | 4 → 2 | 5261 → 513 | 27.8 → 22.0 | 3.8 → 2.6 | 0.85 → 1.61 |
+| eight (its field) | 61 → 61 | 4 → 2 | 550 → 2869 | 29.8 → 28.8 | 8.5 → 6.7 | 0.68 → 1.76 |
+| fandisk | 65 → 87 | 4 → 0 | 182 → 87 | 22.1 → 19.8 | 6.7 → 2.0 | 0.56 → 1.98 |
+| fertility (α 30, k 30) | 126 → 126 | 2 → 2 | 326 → 326 | 21.2 → 13.4 | 4.9 → 2.5 | 2.48 → 3.37 |
+| joint | 62 → 67 | 2 → 0 | 116 → 67 | 18.1 → 3.9 | 9.2 → 0.5 | 3.89 → 2.31 |
+| kitten | 63 → 72 | 2 → 0 | 763 → 72 | 30.7 → 21.7 | 15.2 → 8.3 | 0.50 → 0.39 |
+| lilium (its field) | 36 → 73 | 18 → 2 | 84 → 136 | 66.5 → 48.2 | 31.4 → 19.4 | 0.57 → 0.49 |
+| rockerarm (α 30, k 30) | 99 → 113 | 4 → 2 | 1094 → 4165 | 21.9 → 19.7 | 7.8 → 6.3 | 4.06 → 2.95 |
+| dragon (its field) | 4684 → 4869 | 305 → 280 | 57841 → 48193 | 41.0 → 40.8 | 20.9 → 21.4 | 16.5 → 25.7 |
+
+Six of the twelve layouts are now conforming, and their quad meshes keep the layout's structure
+exactly (BC = patches, no irregular vertex but the singularities): bunny, kitten, joint,
+fandisk, camelhead and aqua_center. Where t-junctions are left (fertility, eight, rockerarm,
+deckel: 2 each; lilium 2; the dragon 280), the log names each port with its reason; on
+fertility, eight and rockerarm every path between the two dangling ports runs along 4–8
+separatrices, and no trial that freed them matched all the ports again (with k 20 instead of 10
+the eight's first program leaves a layout the completion does make conforming, 80 patches).
+One t-junction's line runs on through the quad mesh, and on eight and rockerarm the lines of the
+two that are left wind around the model more than those of the four before: BC grows although
+the t-junctions halve. More patches where the border is reached across the layout (camelhead 97
+→ 176, lilium 36 → 73): each such line is a full separatrix to the border. The dragon's run is
+slower: the field-aligned pass misses the distance bound there and the stage runs again without
+the field (mean-value maps), which meets it.
+
 ## Quad quality: folds and the distance bound (issue 21, parts 2 and 3; 2026-12-03)
 
 What changed (branch quad-quality): the scaled Jacobian of a quad now also measures each of its

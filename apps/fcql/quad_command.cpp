@@ -86,6 +86,7 @@ QuadStage runQuadStage(const FieldStage& fs, const LayoutStage& ls, const Comman
   stats.set("quad.field_folds_resmoothed", r.foldsResmoothed);
   stats.set("quad.field_folds_resampled", r.foldsResampled);
   stats.set("quad.field_folds_without_field", r.foldsWithoutField);
+  stats.set("quad.field_bound_without_field", r.boundWithoutField);
   if (r.foldsResmoothed || r.foldsResampled || r.foldsWithoutField)
     progress(quiet, std::string("folds left by the field-aligned pass: ") +
                         (r.foldsWithoutField ? "the pass without the field folded fewer and was kept"

@@ -262,7 +262,27 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     }
   };
   measure(r);
-  QuadrangulationOptions finer = options;
+  // Where the field-aligned maps miss the bound at the asked size (patches stretched along the
+  // field where the surface curves across them), the stage without the field, whose grids
+  // follow the patches' outlines, is tried at the same size before any refinement, and kept
+  // (with its own refinements and fold repairs) if it meets the bound there.
+  QuadrangulationOptions active = options;
+  if (r.deviationBound > limit && !options.fieldDirections.empty()) {
+    QuadrangulationOptions plain = options;
+    plain.fieldDirections.clear();
+    try {
+      QuadrangulationResult without = quadrangulateOnce(layout, plain, topology);
+      measure(without);
+      if (without.deviationBound <= limit) {
+        r = std::move(without);
+        r.boundWithoutField = true;
+        active = plain;
+      }
+    } catch (const std::runtime_error&) {
+      // It fails at this size: the field-aligned mesh is refined below.
+    }
+  }
+  QuadrangulationOptions finer = active;
   while (r.deviationBound > limit && r.refinements < options.maxRefinements) {
     const double step = std::clamp(0.9 * std::sqrt(limit / r.deviationBound), 0.5, 0.9);
     if (double(r.mesh.numQuads()) / (step * step) > double(options.maxQuads)) {
@@ -296,15 +316,15 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     // Folds left by the field-aligned pass the refinements kept: other ways to sample it,
     // kept if they fold fewer and stay within the bound (or no farther than this one).
     const double bound = std::max(limit, r.deviationBound);
-    reduceFolds(r, layout, options, [&](QuadrangulationResult& c) {
+    reduceFolds(r, layout, active, [&](QuadrangulationResult& c) {
       measure(c);
       return c.deviationBound <= bound;
     });
     // Still folded: the whole stage without the field (its own refinements), kept if it folds
     // fewer, so that the field never leaves more folds than the stage without it.
-    const int left = options.fieldDirections.empty() ? 0 : foldedQuads(r.mesh);
-    if (left > 0 && left <= kMaxFoldsResampled) {
-      QuadrangulationOptions plain = options;
+    const int left = active.fieldDirections.empty() ? 0 : foldedQuads(r.mesh);
+    if (left > 0) {
+      QuadrangulationOptions plain = active;
       plain.fieldDirections.clear();
       try {
         QuadrangulationResult without = quadrangulate(layout, plain);
@@ -316,6 +336,21 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       } catch (const std::runtime_error&) {
         // The stage without the field fails where this one did not: keep this one.
       }
+    }
+  }
+  if (r.deviationBound > limit && !active.fieldDirections.empty()) {
+    // Refined, the field-aligned maps still miss the bound: the whole stage without the field
+    // (its own refinements) is kept if it meets it.
+    QuadrangulationOptions plain = active;
+    plain.fieldDirections.clear();
+    try {
+      QuadrangulationResult without = quadrangulate(layout, plain);
+      if (without.deviationBound <= limit) {
+        r = std::move(without);
+        r.boundWithoutField = true;
+      }
+    } catch (const std::runtime_error&) {
+      // It misses the bound too: the error below says so for the field-aligned one.
     }
   }
   r.deviationLimit = limit;
@@ -344,6 +379,9 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
   if (r.splitEverything)
     notes.push_back("zero chains were left even then: every patch was split once more (the last resort of section "
                     "4.4), which makes the counts agree (patches with t-junctions get an irregular vertex inside)");
+  if (r.boundWithoutField)
+    notes.push_back("the field-aligned patch maps stayed farther than the distance bound from the surface; the quads "
+                    "were made without the field (mean-value maps), which meet it");
   if (options.maxDeviation <= 0) return notes;
   char line[400];
   const double diagonal = r.deviationLimit / options.maxDeviation;

@@ -39,6 +39,9 @@ struct QuadrangulationResult {
   /// ... or, still folded, the pass (or, last, the whole stage) made without the field folded
   /// fewer and was kept.
   bool foldsWithoutField = false;
+  /// The field-aligned stage missed maxDeviation even after its refinements; the whole stage
+  /// without the field (mean-value maps) met it and was kept.
+  bool boundWithoutField = false;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
   /// than maxDeviation from the surface (restoreSampledPositions).
