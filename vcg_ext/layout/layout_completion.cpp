@@ -34,11 +34,18 @@ std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout)
 /// Per dangling port, its paths to the other dangling ports with no barrier in the way, and
 /// what each would have to free. `reasons`, if given, gets for each dangling port why no
 /// separatrix joins it yet.
+/// With `reroute`, the paths may end at any port: one that ends at a port a separatrix already
+/// joins frees that separatrix too, whose other port then needs a new partner (a dangling port
+/// taken over, the old separatrix re-routed).
 std::vector<FreeingOption> freeingOptions(const GeodesicGraph& graph, const Layout& layout,
-                                          const std::vector<int>& dangling,
+                                          const std::vector<int>& dangling, bool reroute,
                                           std::map<int, std::string>* reasons = nullptr) {
-  std::vector<char> sinks(graph.ports().size(), 0);
+  std::vector<char> sinks(graph.ports().size(), reroute ? 1 : 0);
   for (int p : dangling) sinks[p] = 1;
+  std::vector<int> separatrixAt(graph.ports().size(), -1);
+  for (int i = 0; i < int(layout.separatrices.size()); ++i)
+    for (int port : {layout.separatrices[i].portA, layout.separatrices[i].portB})
+      if (port >= 0) separatrixAt[port] = i;
   SearchOptions search;
   search.maxSinks = graph.parameters().k;
   search.sinkAllowed = sinks;
@@ -52,6 +59,11 @@ std::vector<FreeingOption> freeingOptions(const GeodesicGraph& graph, const Layo
       if (path.end != TracedPath::Sink || path.sinkPort == dangling[i]) continue;
       ++paths;
       std::vector<int> blockers = tangentialBlockers(path, barriers);
+      if (separatrixAt[path.sinkPort] >= 0) {
+        blockers.push_back(separatrixAt[path.sinkPort]);
+        std::sort(blockers.begin(), blockers.end());
+        blockers.erase(std::unique(blockers.begin(), blockers.end()), blockers.end());
+      }
       fewest = std::min(fewest, blockers.size());
       // No blocker: the pair was reachable and the cycle chose otherwise; freeing nothing
       // changes nothing.
@@ -134,12 +146,15 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
   // Passes over the options found for the dangling ports: each option names its separatrices
   // by their ports, so that it still applies after other trials were kept. A pass that kept a
   // trial is followed by another, with the options found anew.
+  // A pass that keeps nothing with paths between dangling ports is followed by one that may
+  // re-route separatrices (paths to any port); one that keeps nothing either ends it.
+  bool reroute = false;
   while (current > 0 && report.trials < params.completionTrials) {
     const std::vector<int> dangling = danglingPorts(graph, layout);
-    if (dangling.size() < 2) break;
+    if (dangling.size() < (reroute ? 1u : 2u)) break;
     std::vector<std::pair<std::vector<std::pair<int, int>>, FreeingOption>> options;
-    report.reasons.clear();
-    for (FreeingOption& o : freeingOptions(graph, layout, dangling, &report.reasons)) {
+    if (!reroute) report.reasons.clear();
+    for (FreeingOption& o : freeingOptions(graph, layout, dangling, reroute, reroute ? nullptr : &report.reasons)) {
       std::vector<std::pair<int, int>> ports;
       for (int i : o.separatrices) ports.push_back(portsOf(layout.separatrices[i]));
       options.push_back({std::move(ports), std::move(o)});
@@ -148,15 +163,21 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
     for (const auto& [freedPorts, option] : options) {
       if (report.trials >= params.completionTrials || current == 0) break;
       const std::vector<char> used = usedPorts(graph, layout);
-      if (used[option.from] || used[option.to]) continue;  // joined by a trial kept before
+      // Its ports joined by a trial kept before: the dangling one it starts from, and the one it
+      // ends at unless that is a port of a separatrix it frees (a re-route).
+      const bool freesTo = std::any_of(freedPorts.begin(), freedPorts.end(), [&](const std::pair<int, int>& f) {
+        return f.first == option.to || f.second == option.to;
+      });
+      if (used[option.from] || (used[option.to] && !freesTo)) continue;
       const std::vector<int> freed = findSeparatrices(layout, freedPorts);
       if (freed.empty()) continue;  // replaced by a trial kept before
       ++report.trials;
-      // Only the ports this frees and the two it is for are searched from (the other dangling
-      // ports' searches would find what they found before); every free port is a sink.
+      // Only the ports this frees, the two it is for and the dangling ones are searched from
+      // (the others' searches would find what they found before); every free port is a sink.
       Layout trial = layout;
       std::vector<char> sources(graph.ports().size(), 0);
       sources[option.from] = sources[option.to] = 1;
+      for (int p : dangling) sources[p] = 1;
       for (const auto& [a, b] : freedPorts) {
         if (a >= 0) sources[a] = 1;
         if (b >= 0) sources[b] = 1;
@@ -173,7 +194,13 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
         improved = true;
       }
     }
-    if (!improved) break;
+    if (improved) {
+      reroute = false;
+    } else if (!reroute) {
+      reroute = true;
+    } else {
+      break;
+    }
   }
   report.tJunctionsAfter = current;
   if (report.trials >= params.completionTrials && current > 0)
