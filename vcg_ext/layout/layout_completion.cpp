@@ -21,7 +21,9 @@ struct FreeingOption {
 constexpr std::size_t kMaxFreed = 16;
 /// A trial's searches stop after this many times k sinks: the few ports it frees need more
 /// alternatives than the first program's searches to be matched all at once.
-constexpr int kTrialSinkFactor = 3;
+constexpr int kTrialSinkFactor = 1;
+/// ... and seek no path longer than this many times the longest of those it replaces.
+constexpr double kTrialLengthFactor = 4.0;
 
 std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout) {
   const std::vector<char> used = usedPorts(graph, layout);
@@ -183,8 +185,13 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
         if (b >= 0) sources[b] = 1;
       }
       for (auto it = freed.rbegin(); it != freed.rend(); ++it) trial.separatrices.erase(trial.separatrices.begin() + *it);
+      // The new separatrices replace those freed and the path that showed them: none is sought
+      // much longer than the longest of these (the searches would otherwise run through the
+      // whole graph for sinks that barriers hide).
+      double longest = option.length;
+      for (int i : freed) longest = std::max(longest, layout.separatrices[i].path.length);
       runSolvingCycle(graph, trial, params, SelectionWeights::CoverageFirst, &sources,
-                      kTrialSinkFactor * graph.parameters().k);
+                      kTrialSinkFactor * graph.parameters().k, kTrialLengthFactor * longest);
       const int defects = propagationDefects(graph, trial);
       if (defects < current) {
         report.freedSeparatrices += int(freed.size());

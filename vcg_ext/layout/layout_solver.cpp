@@ -89,7 +89,8 @@ std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
 }
 
 void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
-                     const SelectionWeights weights, const std::vector<char>* sourcesOnly, int maxSinks) {
+                     const SelectionWeights weights, const std::vector<char>* sourcesOnly, int maxSinks,
+                     double maxLength) {
   // A search that ran out of graph before finding as many sinks as it was allowed proves the
   // sinks it did not find out of reach of its port, and they stay out of reach in later
   // rounds: the barriers only grow. Later searches leave them out, so they stop once the sinks
@@ -111,6 +112,7 @@ void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutPar
       if (sourcesOnly && !(*sourcesOnly)[p]) continue;
       SearchOptions o;
       o.maxSinks = maxSinks > 0 ? maxSinks : graph.parameters().k;
+      o.maxLength = maxLength;
       o.barriers = &barriers;
       o.sinkAllowed = outOfReach.allowedFrom(p, free);
       if (std::count(o.sinkAllowed.begin(), o.sinkAllowed.end(), 1) == 0) continue;

@@ -19,6 +19,7 @@
 #include "layout/separatrix_selection.h"
 #include "tracing/separatrix_graph.h"
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -97,9 +98,11 @@ enum class SelectionWeights { Length, CoverageFirst };
 /// Step 2: searches from the dangling ports with `layout` frozen as barriers, selection among
 /// the new candidates, until nothing is added (at most params.maxIterations − 1 rounds). With
 /// `sourcesOnly`, only the dangling ports it marks are searched from (every free port is a sink).
-/// Each search stops after `maxSinks` sinks (0: k, the graph's parameter).
+/// Each search stops after `maxSinks` sinks (0: k, the graph's parameter) and seeks no path
+/// longer than `maxLength`.
 void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
-                     SelectionWeights weights, const std::vector<char>* sourcesOnly = nullptr, int maxSinks = 0);
+                     SelectionWeights weights, const std::vector<char>* sourcesOnly = nullptr, int maxSinks = 0,
+                     double maxLength = std::numeric_limits<double>::infinity());
 /// Raises every arc's length by more than all of them together: the selection's weights
 /// (mean length / length) then favour covering more ports over any saving in length.
 void weighCoverageFirst(SeparatrixGraph& h);

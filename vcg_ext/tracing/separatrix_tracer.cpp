@@ -142,6 +142,9 @@ public:
     if (wanted == 0 && !opt.tJunctionMode && !opt.borderEnds) return found;
     while (!heap.empty()) {
       auto [d, u] = heap.pop();
+      // Keys are popped in increasing order, and a path through u is at least its key plus the
+      // source's offset long (the reduced weights' potential is a lower bound).
+      if (double(d) + sourceOffset > opt.maxLength) break;
       if (u < 0) {  // a t-junction terminal: the path stops on a barrier
         found.push_back(buildTerminalPath(port, terminals_[-1 - u], d));
         break;

@@ -12,6 +12,7 @@
 #include "tracing/traced_path.h"
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace fcql {
@@ -55,6 +56,9 @@ struct SearchOptions {
   /// whichever is nearest, crossing barriers orthogonally on the way (never tangentially).
   /// One path at most; ignored in t-junction mode.
   bool borderEnds = false;
+  /// Paths longer than this (γ, Eq. 1) are not sought: the search stops once every path left
+  /// would be longer (infinity: no bound).
+  double maxLength = std::numeric_limits<double>::infinity();
   /// Per port: 1 if its sink may end a path (empty: all). The source's own sink never does.
   std::vector<char> sinkAllowed;
 };
