@@ -125,10 +125,10 @@ for name in "${names[@]}"; do
     quads+=" | $(fmt %.2f "$(value "$s" time_s ilp)") | – | $(fmt %.2f "$(value "$s" time_s total)")"
   fi
   # The paper's Table 1 times the layout from a given field: graph G, tracing, the 0-1
-  # programs with the solving cycle, propagation and the cut into patches.
+  # programs with the solving cycle, the completion, propagation and the cut into patches.
   layout_s=$(awk -v a="$(value "$s" time_s graph)" -v b="$(value "$s" time_s tracing)" -v c="$(value "$s" time_s ilp)" \
     -v d="$(value "$s" time_s cycle_tracing)" -v e="$(value "$s" time_s propagation)" -v f="$(value "$s" time_s cut)" \
-    'BEGIN { printf "%.2f", a + b + c + d + e + f }')
+    -v g="$(value "$s" time_s completion)" 'BEGIN { printf "%.2f", a + b + c + d + e + f + g }')
   ratio="–"
   if [ -n "$paper_time" ]; then
     total_s=$(value "$s" time_s total)
@@ -303,34 +303,40 @@ builds running beside it, so times are ±30%):
 to the layout's patches when the quad mesh keeps the layout's structure). Before: main at
 5e0f8e4 with the base-complex measure added; after: this table's run.
 
-| mesh | patches | t-junctions | BC | misaligned quads % | misaligned faces % | total s |
-|---|---:|---:|---:|---:|---:|---:|
-| aqua_center | 16 → 30 | 8 → 0 | 30 → 30 | 56.5 → 15.0 | 31.9 → 1.4 | 0.70 → 0.62 |
-| bunny (α 15, k 30) | 79 → 83 | 2 → 0 | 294 → 83 | 24.5 → 15.1 | 4.9 → 1.8 | 4.67 → 3.25 |
-| camelhead | 97 → 176 | 6 → 0 | 246 → 176 | 30.6 → 25.3 | 8.6 → 6.1 | 3.75 → 5.56 |
-| deckel | 191 → 206 | 4 → 2 | 5261 → 513 | 27.8 → 22.0 | 3.8 → 2.6 | 0.85 → 1.61 |
-| eight (its field) | 61 → 61 | 4 → 2 | 550 → 2869 | 29.8 → 28.8 | 8.5 → 6.7 | 0.68 → 1.76 |
-| fandisk | 65 → 87 | 4 → 0 | 182 → 87 | 22.1 → 19.8 | 6.7 → 2.0 | 0.56 → 1.98 |
-| fertility (α 30, k 30) | 126 → 126 | 2 → 2 | 326 → 326 | 21.2 → 13.4 | 4.9 → 2.5 | 2.48 → 3.37 |
-| joint | 62 → 67 | 2 → 0 | 116 → 67 | 18.1 → 3.9 | 9.2 → 0.5 | 3.89 → 2.31 |
-| kitten | 63 → 72 | 2 → 0 | 763 → 72 | 30.7 → 21.7 | 15.2 → 8.3 | 0.50 → 0.39 |
-| lilium (its field) | 36 → 73 | 18 → 2 | 84 → 136 | 66.5 → 48.2 | 31.4 → 19.4 | 0.57 → 0.49 |
-| rockerarm (α 30, k 30) | 99 → 113 | 4 → 2 | 1094 → 4165 | 21.9 → 19.7 | 7.8 → 6.3 | 4.06 → 2.95 |
-| dragon (its field) | 4684 → 4869 | 305 → 280 | 57841 → 48193 | 41.0 → 40.8 | 20.9 → 21.4 | 16.5 → 25.7 |
+| mesh | patches | t-junctions | BC | misaligned quads % | misaligned faces % | layout s | total s |
+|---|---:|---:|---:|---:|---:|---:|---:|
+| aqua_center | 16 → 30 | 8 → 0 | 30 → 30 | 56.5 → 15.0 | 31.9 → 1.4 | 0.43 → 0.18 | 0.70 → 0.34 |
+| bunny (α 15, k 30) | 79 → 83 | 2 → 0 | 294 → 83 | 24.5 → 15.1 | 4.9 → 1.8 | 3.33 → 1.21 | 4.67 → 1.88 |
+| camelhead | 97 → 176 | 6 → 0 | 246 → 176 | 30.6 → 25.3 | 8.6 → 6.1 | 1.24 → 1.65 | 3.75 → 3.42 |
+| deckel | 191 → 206 | 4 → 2 | 5261 → 513 | 27.8 → 22.0 | 3.8 → 2.6 | 0.36 → 0.61 | 0.85 → 1.02 |
+| eight (its field) | 61 → 88 | 4 → 0 | 550 → 88 | 29.8 → 19.4 | 8.5 → 4.9 | 0.48 → 0.89 | 0.68 → 1.40 |
+| fandisk | 65 → 87 | 4 → 0 | 182 → 87 | 22.1 → 19.8 | 6.7 → 2.0 | 0.33 → 0.72 | 0.56 → 1.52 |
+| fertility (α 30, k 30) | 126 → 126 | 2 → 2 | 326 → 326 | 21.2 → 13.4 | 4.9 → 2.5 | 1.31 → 2.50 | 2.48 → 3.31 |
+| joint | 62 → 67 | 2 → 0 | 116 → 67 | 18.1 → 3.9 | 9.2 → 0.5 | 2.65 → 1.37 | 3.89 → 2.24 |
+| kitten | 63 → 72 | 2 → 0 | 763 → 72 | 30.7 → 21.7 | 15.2 → 8.3 | 0.29 → 0.22 | 0.50 → 0.38 |
+| lilium (its field) | 36 → 73 | 18 → 2 | 84 → 136 | 66.5 → 48.2 | 31.4 → 19.4 | 0.42 → 0.94 | 0.57 → 1.09 |
+| rockerarm (α 30, k 30) | 99 → 187 | 4 → 0 | 1094 → 677 | 21.9 → 13.4 | 7.8 → 4.3 | 2.96 → 2.78 | 4.06 → 4.28 |
+| dragon (its field) | 4684 → 4839 | 305 → 282 | 57841 → 54180 | 41.0 → 40.8 | 20.9 → 20.9 | 4.94 → 5.01 | 16.5 → 33.4 |
 
-Six of the twelve layouts are now conforming, and their quad meshes keep the layout's structure
-exactly (BC = patches, no irregular vertex but the singularities): bunny, kitten, joint,
-fandisk, camelhead and aqua_center. Where t-junctions are left (fertility, eight, rockerarm,
-deckel: 2 each; lilium 2; the dragon 280), the log names each port with its reason; on
-fertility, eight and rockerarm every path between the two dangling ports runs along 4–8
-separatrices, and no trial that freed them matched all the ports again (with k 20 instead of 10
-the eight's first program leaves a layout the completion does make conforming, 80 patches).
-One t-junction's line runs on through the quad mesh, and on eight and rockerarm the lines of the
-two that are left wind around the model more than those of the four before: BC grows although
-the t-junctions halve. More patches where the border is reached across the layout (camelhead 97
-→ 176, lilium 36 → 73): each such line is a full separatrix to the border. The dragon's run is
-slower: the field-aligned pass misses the distance bound there and the stage runs again without
-the field (mean-value maps), which meets it.
+*layout* now includes the completion (`time_s.completion`). The machine's load changed between
+the two runs (the "before" run shared the cores with a build), so small times compare loosely.
+
+Eight of the twelve layouts are now conforming, and on seven of them the quad mesh keeps the
+layout's structure exactly (BC = patches, no irregular vertex but the singularities): bunny,
+kitten, joint, fandisk, eight, camelhead and aqua_center; rockerarm's BC (677 for 187 patches)
+comes from its singularity of index +1/2 (a two-valent vertex, dissolved in the quad mesh). Where
+t-junctions are left (fertility and deckel 2 each, lilium 2, the dragon 282), the log names each
+port with its reason: on fertility every path between its two dangling ports runs along at least
+8 separatrices, and none of the 24 trials matched all the ports again. The completion first
+frees the separatrices a path between two dangling ports meets; when no such trial helps, it
+re-routes: a path from a dangling port to any port frees the separatrix there too (eight and
+rockerarm were made conforming so; their patches grow, 61 → 88 and 99 → 187, the price of
+conforming lines). On open surfaces lines go to the border across the layout (camelhead 97 →
+176 patches, lilium 36 → 73). A trial's searches seek no path longer than 4 times the longest
+separatrix it replaces. Its cost: fertility's 24 failed trials take about 1 s of its layout's
+2.5 s (8.8× the paper's time on the layout, where it was 11–15×); bunny 21.7×, rockerarm 15.6×,
+the dragon 12.8×. The dragon's whole run is slower: the field-aligned pass misses the distance
+bound there and the stage runs again without the field (mean-value maps), which meets it.
 
 ## Quad quality: folds and the distance bound (issue 21, parts 2 and 3; 2026-12-03)
 

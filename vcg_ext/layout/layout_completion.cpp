@@ -196,6 +196,9 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
       if (defects < current) {
         report.freedSeparatrices += int(freed.size());
         ++report.accepted;
+        // The trials' programs and searches count in the completion's time, not twice.
+        trial.ilpSeconds = layout.ilpSeconds;
+        trial.cycleTracingSeconds = layout.cycleTracingSeconds;
         layout = std::move(trial);
         current = defects;
         improved = true;
