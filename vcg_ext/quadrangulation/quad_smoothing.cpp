@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -19,6 +18,10 @@ namespace {
 constexpr double kSnapShare = 0.35;
 constexpr double kMinScaledJacobian = 0.1;
 constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower
+constexpr double kSlideAngleDeg = 60;
+constexpr double kSlideTurnDeg = 20;
+constexpr char kFixed = 1;               ///< a border vertex, or one at a corner of the feature lines
+constexpr char kOnFeature = 2;           ///< on a feature line: smoothing keeps it, untangling slides it along
 
 /// Per triangle and local edge (i → i+1): 1 if the edge is sharp (dihedral above the threshold).
 std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
@@ -51,8 +54,23 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
 /// where the vertex is, put back on the surface. A dart at a very obtuse patch corner is the
 /// usual case: the Laplacian pulls its inner vertex towards the corner, the completion pushes it
 /// out. So no move folds a quad that was not folded, or worsens one that was.
-void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<char>& fixed,
-              const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian, SmoothingReport& report) {
+void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPointIndex* features,
+              const std::vector<char>& slidable, const std::vector<char>& fixed, const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian,
+              SmoothingReport& report) {
+  // Where vertex v may go for target c: the surface's closest point, or for a vertex on a
+  // straight crease (kOnFeature) the crease's, so that it slides along it and stays on it.
+  // It stays where it is rather than go onto another, unslidable, feature line.
+  auto place = [&](int v, const Vec3& c) {
+    if (fixed[v] != kOnFeature) return surface.closest(c).point;
+    const ClosestPoint onFeature = features->closest(c);
+    return slidable[onFeature.triangle] ? onFeature.point : quads.positions[v];
+  };
+  // Feature vertices move only as corners of a quad folded at the start of the sweep: sliding
+  // along a crease can uncover a sharp tip, so it is kept for where nothing else helps.
+  std::vector<char> foldedCorner(quads.positions.size(), 0);
+  auto movable = [&](int v) {
+    return (!fixed[v] || (features && fixed[v] == kOnFeature && foldedCorner[v])) && !neighbours[v].empty();
+  };
   std::vector<int> around;
   std::vector<double> before;
   std::vector<double> now;
@@ -79,8 +97,12 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
     bad.clear();
     jacobian.all(now);
     double total = 0;
-    for (int q = 0; q < quads.numQuads(); ++q)
+    std::fill(foldedCorner.begin(), foldedCorner.end(), 0);
+    for (int q = 0; q < quads.numQuads(); ++q) {
       if (now[q] <= kMinScaledJacobian) bad.push_back(q), total += kMinScaledJacobian - now[q];
+      if (now[q] <= 0)
+        for (int v : quads.quads[q]) foldedCorner[v] = 1;
+    }
     // Stop once a sweep gains less than 1% of the shortfall.
     if (sweep > 0 && total > lastTotal * 0.99) break;
     lastTotal = total;
@@ -97,7 +119,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
     bool changed = false;
     for (std::size_t i = 0; i < corners.size(); ++i) {
       const int v = corners[i];
-      if (fixed[v] || neighbours[v].empty()) continue;
+      if (!movable(v)) continue;
       jacobian.dependents(v, around);
       const Vec3 original = quads.positions[v];
       jacobian.values(around, before);
@@ -121,7 +143,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
       for (std::size_t c = 0; c < whole; ++c) candidates.push_back((candidates[c] + original) / 2);
       Vec3 bestPosition = original;
       for (const Vec3& c : candidates) {
-        quads.positions[v] = surface.closest(c).point;
+        quads.positions[v] = place(v, c);
         const double s = shortfall();
         if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
       }
@@ -138,7 +160,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
         const Vec3 from = bestPosition;
         for (int k = 0; k < 8; ++k) {
           const double a = k * kPi / 4;
-          quads.positions[v] = surface.closest(from + (t1 * std::cos(a) + t2 * std::sin(a)) * r).point;
+          quads.positions[v] = place(v, from + (t1 * std::cos(a) + t2 * std::sin(a)) * r);
           const double s = shortfall();
           if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
         }
@@ -245,7 +267,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     }
   std::vector<char> fixed(nv, 0);
   for (const auto& e : directed)
-    if (!directed.count({e.first.second, e.first.first})) fixed[e.first.first] = fixed[e.first.second] = 1;
+    if (!directed.count({e.first.second, e.first.first})) fixed[e.first.first] = fixed[e.first.second] = kFixed;
   for (auto& n : neighbours) {
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
@@ -256,6 +278,46 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     for (int i = 0; i < 3; ++i)
       if (sharp[t][i] && surfaceTriangles[t][i] < surfaceTriangles[t][(i + 1) % 3])
         featureSegments.push_back({surfaceTriangles[t][i], surfaceTriangles[t][(i + 1) % 3], surfaceTriangles[t][(i + 1) % 3]});
+  std::vector<int> sharpDegree(surfacePositions.size(), 0);
+  for (const auto& e : featureSegments) ++sharpDegree[e[0]], ++sharpDegree[e[1]];
+  // Creases sharp enough to slide along (dihedral above kSlideAngleDeg): those of a CAD model,
+  // not the short zigzag ridges of a scan, along which a vertex would leave the ridge.
+  std::vector<char> slidable(featureSegments.size(), 0);
+  {
+    std::map<std::pair<int, int>, int> firstTriangle;
+    std::map<std::pair<int, int>, double> cosine;
+    for (int t = 0; t < int(surfaceTriangles.size()); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const int a = surfaceTriangles[t][i], b = surfaceTriangles[t][(i + 1) % 3];
+        if (!sharp[t][i]) continue;
+        const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+        auto it = firstTriangle.find(key);
+        if (it == firstTriangle.end()) firstTriangle.emplace(key, t);
+        else cosine[key] = normals[t].dot(normals[it->second]);
+      }
+    // And straight: at each end that continues the line (two sharp edges there), the next
+    // segment turns by less than kSlideTurnDeg.
+    std::vector<Vec3> direction(surfacePositions.size(), Vec3::Zero());
+    std::vector<double> turnCosine(surfacePositions.size(), 1);
+    for (const auto& e : featureSegments) {
+      const Vec3 d = (surfacePositions[e[1]] - surfacePositions[e[0]]).normalized();
+      for (int k = 0; k < 2; ++k) {
+        const int end = e[k];
+        const Vec3 out = k == 0 ? d : Vec3(-d);  // leaving the end
+        if (direction[end].isZero()) direction[end] = out;
+        else turnCosine[end] = -direction[end].dot(out);
+      }
+    }
+    const double cosSlide = std::cos(kSlideAngleDeg * kPi / 180), cosTurn = std::cos(kSlideTurnDeg * kPi / 180);
+    for (std::size_t i = 0; i < featureSegments.size(); ++i) {
+      auto it = cosine.find({featureSegments[i][0], featureSegments[i][1]});
+      slidable[i] = it != cosine.end() && it->second < cosSlide;
+      for (int k = 0; k < 2; ++k) {
+        const int end = featureSegments[i][k];
+        if (sharpDegree[end] == 2 && turnCosine[end] < cosTurn) slidable[i] = 0;
+      }
+    }
+  }
   std::unique_ptr<ClosestPointIndex> features;
   if (!featureSegments.empty()) features = std::make_unique<ClosestPointIndex>(surfacePositions, featureSegments);
 
@@ -265,7 +327,13 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     if (fixed[v] || neighbours[v].empty()) continue;
     const ClosestPoint cp = features->closest(quads.positions[v]);
     const auto& e = featureSegments[cp.triangle];
-    if (cp.distance <= std::max(tolerance, 1e-6 * (surfacePositions[e[1]] - surfacePositions[e[0]]).norm())) fixed[v] = 1;
+    const double near = std::max(tolerance, 1e-6 * (surfacePositions[e[1]] - surfacePositions[e[0]]).norm());
+    if (cp.distance > near) continue;
+    // On a feature line; at one of its ends or corners (not two sharp edges at that surface
+    // vertex) it stays put for good.
+    fixed[v] = slidable[cp.triangle] ? kOnFeature : kFixed;
+    for (int end : {e[0], e[1]})
+      if (sharpDegree[end] != 2 && (surfacePositions[end] - cp.point).norm() <= near) fixed[v] = kFixed;
   }
   for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
 
@@ -343,9 +411,9 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
       for (int v : quads.quads[q]) reference[q] += at[v];
       if (reference[q].norm() > 0) reference[q].normalize();
     }
-    untangle(quads, index, fixed, neighbours, QuadJacobian(quads, std::move(reference)), report);
+    untangle(quads, index, features.get(), slidable, fixed, neighbours, QuadJacobian(quads, std::move(reference)), report);
   }
-  untangle(quads, index, fixed, neighbours, jacobian, report);
+  untangle(quads, index, features.get(), slidable, fixed, neighbours, jacobian, report);
   return report;
 }
 
