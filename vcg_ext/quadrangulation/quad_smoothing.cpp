@@ -56,7 +56,7 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
 /// out. So no move folds a quad that was not folded, or worsens one that was.
 void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPointIndex* features,
               const std::vector<char>& slidable, const std::vector<char>& fixed, const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian,
-              SmoothingReport& report) {
+              SmoothingReport& report, bool snapToFeatures) {
   // Where vertex v may go for target c: the surface's closest point, or for a vertex on a
   // straight crease (kOnFeature) the crease's, so that it slides along it and stays on it.
   // It stays where it is rather than go onto another, unslidable, feature line.
@@ -139,6 +139,8 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
       Vec3 average = Vec3::Zero();
       for (int w : neighbours[v]) average += quads.positions[w];
       candidates.push_back(average / double(neighbours[v].size()));
+      // A vertex near a feature line may belong on it (a grid line next to a crease).
+      if (features && snapToFeatures) candidates.push_back(features->closest(original).point);
       const std::size_t whole = candidates.size();
       for (std::size_t c = 0; c < whole; ++c) candidates.push_back((candidates[c] + original) / 2);
       Vec3 bestPosition = original;
@@ -400,20 +402,39 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
         if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
     }
   }
-  {
-    // Against the input surface's normal at each quad (the mean of the normals of the surface
-    // triangles its corners lie on), which folded quads do not disturb.
-    std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
-    std::vector<Vec3> at(nv, Vec3::Zero());
-    for (int v = 0; v < nv; ++v)
-      if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
-    for (int q = 0; q < quads.numQuads(); ++q) {
-      for (int v : quads.quads[q]) reference[q] += at[v];
-      if (reference[q].norm() > 0) reference[q].normalize();
+  // Untangled twice from the smoothed positions: without, then with the nearest point on a
+  // feature line among each vertex's candidates. Which local optimum the greedy moves reach
+  // depends on that choice (a grid line beside a crease unfolds only once on it; elsewhere the
+  // snap can trap a vertex), so the result with fewer folded quads is kept (the first on a tie).
+  const std::vector<Vec3> smoothed = quads.positions;
+  std::vector<Vec3> kept;
+  int keptFolds = std::numeric_limits<int>::max();
+  SmoothingReport keptReport;
+  for (bool snap : {false, true}) {
+    SmoothingReport tried = report;
+    quads.positions = smoothed;
+    {
+      // Against the input surface's normal at each quad (the mean of the normals of the surface
+      // triangles its corners lie on), which folded quads do not disturb.
+      std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
+      std::vector<Vec3> at(nv, Vec3::Zero());
+      for (int v = 0; v < nv; ++v)
+        if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
+      for (int q = 0; q < quads.numQuads(); ++q) {
+        for (int v : quads.quads[q]) reference[q] += at[v];
+        if (reference[q].norm() > 0) reference[q].normalize();
+      }
+      untangle(quads, index, features.get(), slidable, fixed, neighbours, QuadJacobian(quads, std::move(reference)), tried,
+               snap);
     }
-    untangle(quads, index, features.get(), slidable, fixed, neighbours, QuadJacobian(quads, std::move(reference)), report);
+    untangle(quads, index, features.get(), slidable, fixed, neighbours, jacobian, tried, snap);
+    jacobian.all(after);
+    const int folds = int(std::count_if(after.begin(), after.end(), [](double j) { return j <= 0; }));
+    if (folds < keptFolds) keptFolds = folds, kept = quads.positions, keptReport = tried;
+    if (keptFolds == 0 || !features) break;  // nothing to gain, or no feature to snap to
   }
-  untangle(quads, index, features.get(), slidable, fixed, neighbours, jacobian, report);
+  quads.positions = std::move(kept);
+  report = keptReport;
   return report;
 }
 

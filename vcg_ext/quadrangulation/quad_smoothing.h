@@ -22,7 +22,10 @@
 // lowers the quads' shortfall below the threshold (folds weighing ten times more) without
 // folding any quad, worsening a folded one or taking a good one below 0.02; folds left in
 // clusters are smoothed as regions of 2, 4 and 8 rings, kept
-// only when fewer quads are folded and none newly. What cannot be unfolded stays (counted by
+// only when fewer quads are folded and none newly. The untangling runs twice from the smoothed
+// positions, the second time with each vertex's nearest point on a feature line among its
+// candidates (a grid line beside a crease may unfold only on it), and the run leaving fewer
+// folded quads is kept. What cannot be unfolded stays (counted by
 // the caller: quad.inverted_quads).
 #pragma once
 
