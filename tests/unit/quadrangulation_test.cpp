@@ -609,6 +609,50 @@ TEST(Quadrangulation, SmoothingUntanglesAFoldedQuad) {
   for (const Vec3& p : grid.positions) EXPECT_NEAR(p.z(), 0, 1e-12);
 }
 
+TEST(Quadrangulation, UntanglingSlidesAVertexAlongACrease) {
+  // A sheet bent at a right angle along the x axis: the face y = 0..2 on z = 0 and the face
+  // z = 0..-2 on y = 0, quads of 0.5 on both, their middle row of vertices on the crease. One
+  // crease vertex is pushed along the crease beyond its neighbour: the quads on both sides of it
+  // fold, and no vertex off the crease can unfold them (the crease's order is wrong). Feature
+  // vertices stay in smoothing; the untangling slides it back along the crease, never off it.
+  const int n = 8;  // quads along x
+  auto at = [&](int i, int k) { return k * (n + 1) + i; };  // k = 0..8: z = -2 .. 0 .. y = 2
+  auto point = [&](int i, int k) {
+    const double x = 0.5 * i, s = 0.5 * (k - 4);
+    return s <= 0 ? Vec3(x, 0, s) : Vec3(x, s, 0);
+  };
+  QuadMesh grid;
+  for (int k = 0; k <= 8; ++k)
+    for (int i = 0; i <= n; ++i) grid.positions.push_back(point(i, k));
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < n; ++i) grid.quads.push_back({at(i, k), at(i, k + 1), at(i + 1, k + 1), at(i + 1, k)});
+  // The surface: the same grid, each square cut into two triangles (the crease is sharp).
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& q : grid.quads) triangles.push_back({q[0], q[1], q[2]}), triangles.push_back({q[0], q[2], q[3]});
+  const std::vector<Vec3> surface = grid.positions;
+  const QuadJacobian before(grid);
+  for (int q = 0; q < grid.numQuads(); ++q) ASSERT_GT(before(q), 0.5) << "the bent grid must start unfolded";
+  const int pushed = at(4, 4);
+  grid.positions[pushed] = Vec3(2.7, 0, 0);  // from x = 2 beyond its neighbour at 2.5
+  int folded = 0;
+  for (int q = 0; q < grid.numQuads(); ++q) folded += QuadJacobian(grid)(q) <= 0;
+  ASSERT_GE(folded, 2) << "pushing the crease vertex must fold quads for this test to mean anything";
+  SmoothingOptions options;
+  options.iterations = 3;
+  const SmoothingReport report = smoothQuadMesh(grid, surface, triangles, options);
+  EXPECT_GT(report.untangledMoves, 0);
+  const QuadJacobian after(grid);
+  for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(after(q), 0) << "quad " << q << " is still folded";
+  // Still on the crease, now between its neighbours there.
+  EXPECT_NEAR(grid.positions[pushed].y(), 0, 1e-9);
+  EXPECT_NEAR(grid.positions[pushed].z(), 0, 1e-9);
+  EXPECT_GT(grid.positions[pushed].x(), 1.5);
+  EXPECT_LT(grid.positions[pushed].x(), 2.5);
+  // The other crease vertices did not move.
+  for (int i = 0; i <= n; ++i)
+    if (at(i, 4) != pushed) EXPECT_EQ(grid.positions[at(i, 4)], surface[at(i, 4)]) << "crease vertex " << i;
+}
+
 TEST(Quadrangulation, ASmoothingStepThatWouldFoldAQuadIsNotTaken) {
   // A 2×2 grid on the plane z = 0 whose only free vertex is the centre (the others are on the
   // border). Its star is not convex: the average of its four neighbours, where one full step

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -19,6 +18,10 @@ namespace {
 constexpr double kSnapShare = 0.35;
 constexpr double kMinScaledJacobian = 0.1;
 constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower
+constexpr double kSlideAngleDeg = 60;
+constexpr double kSlideTurnDeg = 20;
+constexpr char kFixed = 1;               ///< a border vertex, or one at a corner of the feature lines
+constexpr char kOnFeature = 2;           ///< on a feature line: smoothing keeps it, untangling slides it along
 
 /// Per triangle and local edge (i → i+1): 1 if the edge is sharp (dihedral above the threshold).
 std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
@@ -51,8 +54,23 @@ std::vector<std::array<char, 3>> sharpEdges(const std::vector<Vec3>& P, const st
 /// where the vertex is, put back on the surface. A dart at a very obtuse patch corner is the
 /// usual case: the Laplacian pulls its inner vertex towards the corner, the completion pushes it
 /// out. So no move folds a quad that was not folded, or worsens one that was.
-void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<char>& fixed,
-              const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian, SmoothingReport& report) {
+void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPointIndex* features,
+              const std::vector<char>& slidable, const std::vector<char>& fixed, const std::vector<std::vector<int>>& neighbours, const QuadJacobian& jacobian,
+              SmoothingReport& report, bool snapToFeatures) {
+  // Where vertex v may go for target c: the surface's closest point, or for a vertex on a
+  // straight crease (kOnFeature) the crease's, so that it slides along it and stays on it.
+  // It stays where it is rather than go onto another, unslidable, feature line.
+  auto place = [&](int v, const Vec3& c) {
+    if (fixed[v] != kOnFeature) return surface.closest(c).point;
+    const ClosestPoint onFeature = features->closest(c);
+    return slidable[onFeature.triangle] ? onFeature.point : quads.positions[v];
+  };
+  // Feature vertices move only as corners of a quad folded at the start of the sweep: sliding
+  // along a crease can uncover a sharp tip, so it is kept for where nothing else helps.
+  std::vector<char> foldedCorner(quads.positions.size(), 0);
+  auto movable = [&](int v) {
+    return (!fixed[v] || (features && fixed[v] == kOnFeature && foldedCorner[v])) && !neighbours[v].empty();
+  };
   std::vector<int> around;
   std::vector<double> before;
   std::vector<double> now;
@@ -79,8 +97,12 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
     bad.clear();
     jacobian.all(now);
     double total = 0;
-    for (int q = 0; q < quads.numQuads(); ++q)
+    std::fill(foldedCorner.begin(), foldedCorner.end(), 0);
+    for (int q = 0; q < quads.numQuads(); ++q) {
       if (now[q] <= kMinScaledJacobian) bad.push_back(q), total += kMinScaledJacobian - now[q];
+      if (now[q] <= 0)
+        for (int v : quads.quads[q]) foldedCorner[v] = 1;
+    }
     // Stop once a sweep gains less than 1% of the shortfall.
     if (sweep > 0 && total > lastTotal * 0.99) break;
     lastTotal = total;
@@ -97,7 +119,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
     bool changed = false;
     for (std::size_t i = 0; i < corners.size(); ++i) {
       const int v = corners[i];
-      if (fixed[v] || neighbours[v].empty()) continue;
+      if (!movable(v)) continue;
       jacobian.dependents(v, around);
       const Vec3 original = quads.positions[v];
       jacobian.values(around, before);
@@ -117,11 +139,13 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
       Vec3 average = Vec3::Zero();
       for (int w : neighbours[v]) average += quads.positions[w];
       candidates.push_back(average / double(neighbours[v].size()));
+      // A vertex near a feature line may belong on it (a grid line next to a crease).
+      if (features && snapToFeatures) candidates.push_back(features->closest(original).point);
       const std::size_t whole = candidates.size();
       for (std::size_t c = 0; c < whole; ++c) candidates.push_back((candidates[c] + original) / 2);
       Vec3 bestPosition = original;
       for (const Vec3& c : candidates) {
-        quads.positions[v] = surface.closest(c).point;
+        quads.positions[v] = place(v, c);
         const double s = shortfall();
         if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
       }
@@ -138,7 +162,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const std::vect
         const Vec3 from = bestPosition;
         for (int k = 0; k < 8; ++k) {
           const double a = k * kPi / 4;
-          quads.positions[v] = surface.closest(from + (t1 * std::cos(a) + t2 * std::sin(a)) * r).point;
+          quads.positions[v] = place(v, from + (t1 * std::cos(a) + t2 * std::sin(a)) * r);
           const double s = shortfall();
           if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
         }
@@ -276,7 +300,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     }
   std::vector<char> fixed(nv, 0);
   for (const auto& e : directed)
-    if (!directed.count({e.first.second, e.first.first})) fixed[e.first.first] = fixed[e.first.second] = 1;
+    if (!directed.count({e.first.second, e.first.first})) fixed[e.first.first] = fixed[e.first.second] = kFixed;
   for (auto& n : neighbours) {
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
@@ -287,6 +311,46 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     for (int i = 0; i < 3; ++i)
       if (sharp[t][i] && surfaceTriangles[t][i] < surfaceTriangles[t][(i + 1) % 3])
         featureSegments.push_back({surfaceTriangles[t][i], surfaceTriangles[t][(i + 1) % 3], surfaceTriangles[t][(i + 1) % 3]});
+  std::vector<int> sharpDegree(surfacePositions.size(), 0);
+  for (const auto& e : featureSegments) ++sharpDegree[e[0]], ++sharpDegree[e[1]];
+  // Creases sharp enough to slide along (dihedral above kSlideAngleDeg): those of a CAD model,
+  // not the short zigzag ridges of a scan, along which a vertex would leave the ridge.
+  std::vector<char> slidable(featureSegments.size(), 0);
+  {
+    std::map<std::pair<int, int>, int> firstTriangle;
+    std::map<std::pair<int, int>, double> cosine;
+    for (int t = 0; t < int(surfaceTriangles.size()); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const int a = surfaceTriangles[t][i], b = surfaceTriangles[t][(i + 1) % 3];
+        if (!sharp[t][i]) continue;
+        const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+        auto it = firstTriangle.find(key);
+        if (it == firstTriangle.end()) firstTriangle.emplace(key, t);
+        else cosine[key] = normals[t].dot(normals[it->second]);
+      }
+    // And straight: at each end that continues the line (two sharp edges there), the next
+    // segment turns by less than kSlideTurnDeg.
+    std::vector<Vec3> direction(surfacePositions.size(), Vec3::Zero());
+    std::vector<double> turnCosine(surfacePositions.size(), 1);
+    for (const auto& e : featureSegments) {
+      const Vec3 d = (surfacePositions[e[1]] - surfacePositions[e[0]]).normalized();
+      for (int k = 0; k < 2; ++k) {
+        const int end = e[k];
+        const Vec3 out = k == 0 ? d : Vec3(-d);  // leaving the end
+        if (direction[end].isZero()) direction[end] = out;
+        else turnCosine[end] = -direction[end].dot(out);
+      }
+    }
+    const double cosSlide = std::cos(kSlideAngleDeg * kPi / 180), cosTurn = std::cos(kSlideTurnDeg * kPi / 180);
+    for (std::size_t i = 0; i < featureSegments.size(); ++i) {
+      auto it = cosine.find({featureSegments[i][0], featureSegments[i][1]});
+      slidable[i] = it != cosine.end() && it->second < cosSlide;
+      for (int k = 0; k < 2; ++k) {
+        const int end = featureSegments[i][k];
+        if (sharpDegree[end] == 2 && turnCosine[end] < cosTurn) slidable[i] = 0;
+      }
+    }
+  }
   std::unique_ptr<ClosestPointIndex> features;
   if (!featureSegments.empty()) features = std::make_unique<ClosestPointIndex>(surfacePositions, featureSegments);
 
@@ -296,7 +360,13 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     if (fixed[v] || neighbours[v].empty()) continue;
     const ClosestPoint cp = features->closest(quads.positions[v]);
     const auto& e = featureSegments[cp.triangle];
-    if (cp.distance <= std::max(tolerance, 1e-6 * (surfacePositions[e[1]] - surfacePositions[e[0]]).norm())) fixed[v] = 1;
+    const double near = std::max(tolerance, 1e-6 * (surfacePositions[e[1]] - surfacePositions[e[0]]).norm());
+    if (cp.distance > near) continue;
+    // On a feature line; at one of its ends or corners (not two sharp edges at that surface
+    // vertex) it stays put for good.
+    fixed[v] = slidable[cp.triangle] ? kOnFeature : kFixed;
+    for (int end : {e[0], e[1]})
+      if (sharpDegree[end] != 2 && (surfacePositions[end] - cp.point).norm() <= near) fixed[v] = kFixed;
   }
   for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
 
@@ -371,20 +441,39 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
         if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
     }
   }
-  {
-    // Against the input surface's normal at each quad (the mean of the normals of the surface
-    // triangles its corners lie on), which folded quads do not disturb.
-    std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
-    std::vector<Vec3> at(nv, Vec3::Zero());
-    for (int v = 0; v < nv; ++v)
-      if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
-    for (int q = 0; q < quads.numQuads(); ++q) {
-      for (int v : quads.quads[q]) reference[q] += at[v];
-      if (reference[q].norm() > 0) reference[q].normalize();
+  // Untangled twice from the smoothed positions: without, then with the nearest point on a
+  // feature line among each vertex's candidates. Which local optimum the greedy moves reach
+  // depends on that choice (a grid line beside a crease unfolds only once on it; elsewhere the
+  // snap can trap a vertex), so the result with fewer folded quads is kept (the first on a tie).
+  const std::vector<Vec3> smoothed = quads.positions;
+  std::vector<Vec3> kept;
+  int keptFolds = std::numeric_limits<int>::max();
+  SmoothingReport keptReport;
+  for (bool snap : {false, true}) {
+    SmoothingReport tried = report;
+    quads.positions = smoothed;
+    {
+      // Against the input surface's normal at each quad (the mean of the normals of the surface
+      // triangles its corners lie on), which folded quads do not disturb.
+      std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
+      std::vector<Vec3> at(nv, Vec3::Zero());
+      for (int v = 0; v < nv; ++v)
+        if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
+      for (int q = 0; q < quads.numQuads(); ++q) {
+        for (int v : quads.quads[q]) reference[q] += at[v];
+        if (reference[q].norm() > 0) reference[q].normalize();
+      }
+      untangle(quads, index, features.get(), slidable, fixed, neighbours, QuadJacobian(quads, std::move(reference)), tried,
+               snap);
     }
-    untangle(quads, index, fixed, neighbours, QuadJacobian(quads, std::move(reference)), report);
+    untangle(quads, index, features.get(), slidable, fixed, neighbours, jacobian, tried, snap);
+    jacobian.all(after);
+    const int folds = int(std::count_if(after.begin(), after.end(), [](double j) { return j <= 0; }));
+    if (folds < keptFolds) keptFolds = folds, kept = quads.positions, keptReport = tried;
+    if (keptFolds == 0 || !features) break;  // nothing to gain, or no feature to snap to
   }
-  untangle(quads, index, fixed, neighbours, jacobian, report);
+  quads.positions = std::move(kept);
+  report = keptReport;
   return report;
 }
 

@@ -6,8 +6,12 @@
 // nearest feature line (sharp edges, dihedral angle above `sharpAngleDeg`) when that is closer
 // than about a third of the vertex's mean edge length, so that quads follow creases instead of
 // cutting across them. Vertices on the border of the quad mesh and vertices lying on a sharp
-// edge stay where they are. No step folds a quad: after each round, every quad the round took
-// from above kMinScaledJacobian (0.1) to it or below, at any of its four corners, against its
+// edge stay where they are, except that the untangling below may slide a corner of a folded
+// quad along the crease it lies on, when that crease is sharp (dihedral above 60°) and straight
+// (turning by less than 20° at each of its vertices: a CAD edge, not a scan's ridge), never off
+// it nor onto another line: a vertex pushed past its neighbour on a crease folds the quads on
+// both sides, and only it can unfold them. No step folds a quad: after each round, every quad
+// the round took from above kMinScaledJacobian (0.1) to it or below, at any of its four corners, against its
 // own normal or the surface normal there (QuadJacobian, metrics/quad_quality.h), has the moves
 // it depends on undone. Last, the quads still folded or nearly flat are untangled, first
 // against the input surface's normal at each quad (which folded quads do not disturb: the
@@ -18,7 +22,10 @@
 // lowers the quads' shortfall below the threshold (folds weighing ten times more) without
 // folding any quad, worsening a folded one or taking a good one below 0.02; folds left in
 // clusters are smoothed as regions of 2, 4 and 8 rings, kept
-// only when fewer quads are folded and none newly. What cannot be unfolded stays (counted by
+// only when fewer quads are folded and none newly. The untangling runs twice from the smoothed
+// positions, the second time with each vertex's nearest point on a feature line among its
+// candidates (a grid line beside a crease may unfold only on it), and the run leaving fewer
+// folded quads is kept. What cannot be unfolded stays (counted by
 // the caller: quad.inverted_quads).
 #pragma once
 
