@@ -16,11 +16,6 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-BarrierSet barriersOf(const GeodesicGraph& graph, const Layout& layout) {
-  BarrierSet b(graph.mesh().numFaces());
-  for (int i = 0; i < int(layout.separatrices.size()); ++i) b.add(layout.separatrices[i].path, i);
-  return b;
-}
 
 /// True if two paths meet anywhere inside a shared triangle (cross, touch or overlap).
 bool pathsMeet(const TracedPath& p, const TracedPath& q) {
@@ -69,7 +64,11 @@ void weighCoverageFirst(SeparatrixGraph& h) {
   for (auto& a : h.arcs) a.length += raise;
 }
 
-BarrierSet layoutBarriers(const GeodesicGraph& graph, const Layout& layout) { return barriersOf(graph, layout); }
+BarrierSet layoutBarriers(const GeodesicGraph& graph, const Layout& layout) {
+  BarrierSet b(graph.mesh().numFaces());
+  for (int i = 0; i < int(layout.separatrices.size()); ++i) b.add(layout.separatrices[i].path, i);
+  return b;
+}
 
 void LayoutParameters::validate() const {
   if (!(ilpTimeLimit >= 1) || !std::isfinite(ilpTimeLimit))
@@ -105,7 +104,7 @@ void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutPar
       if (!used[p]) dangling.push_back(p), free[p] = 1;
     if (dangling.size() < 2) break;  // a separatrix needs two free ports
     auto start = Clock::now();
-    BarrierSet barriers = barriersOf(graph, layout);
+    BarrierSet barriers = layoutBarriers(graph, layout);
     std::vector<int> sources;
     std::vector<SearchOptions> options;
     for (int p : dangling) {
@@ -149,33 +148,40 @@ void propagateDanglingPorts(const GeodesicGraph& graph, Layout& layout) {
       if (!used[p] && !failed[p]) dangling.push_back(p);
     for (int p = 0; p < numPorts; ++p) free[p] = !used[p];
     if (dangling.empty()) break;
-    BarrierSet barriers = barriersOf(graph, layout);
+    BarrierSet barriers = layoutBarriers(graph, layout);
     SearchOptions options;
     options.maxSinks = 1;
     options.barriers = &barriers;
     options.tJunctionMode = true;
     options.sinkAllowed = free;
     auto results = traceFromPorts(graph, dangling, options);
-    // On a surface with a border, a port whose path can reach the border (or another dangling
-    // port) across the layout, crossing separatrices orthogonally, goes there instead of
-    // stopping at the first one: a conforming line, where a t-junction is not.
+    // The own sink is excluded by sinkAllowed only if the port is not free: drop it here.
+    std::vector<const TracedPath*> best(dangling.size(), nullptr);
+    for (std::size_t i = 0; i < results.size(); ++i)
+      for (const auto& p : results[i])
+        if (p.sinkPort != dangling[i]) best[i] = &p;
+    // On a surface with a border, a port whose path ends at a t-junction but can reach the
+    // border (or another dangling port) across the layout, crossing separatrices orthogonally,
+    // goes there instead: a conforming line, where a t-junction is not.
     std::vector<std::vector<TracedPath>> acrossResults;
-    if (graph.mesh().numBorderLoops() > 0) {
+    std::vector<std::size_t> atBarrier;
+    if (graph.mesh().numBorderLoops() > 0)
+      for (std::size_t i = 0; i < best.size(); ++i)
+        if (best[i] && best[i]->end == TracedPath::Barrier) atBarrier.push_back(i);
+    if (!atBarrier.empty()) {
       SearchOptions across = options;
       across.tJunctionMode = false;
       across.borderEnds = true;
-      acrossResults = traceFromPorts(graph, dangling, across);
+      std::vector<int> ports;
+      for (std::size_t i : atBarrier) ports.push_back(dangling[i]);
+      acrossResults = traceFromPorts(graph, ports, across);
+      for (std::size_t j = 0; j < atBarrier.size(); ++j)
+        for (const auto& p : acrossResults[j])
+          if (p.end != TracedPath::Barrier && p.sinkPort != ports[j]) best[atBarrier[j]] = &p;
     }
     std::vector<const TracedPath*> found;
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      // The own sink is excluded by sinkAllowed only if the port is not free: drop it here.
-      const TracedPath* best = nullptr;
-      for (const auto& p : results[i])
-        if (p.sinkPort != dangling[i]) best = &p;
-      if (best && best->end == TracedPath::Barrier && !acrossResults.empty())
-        for (const auto& p : acrossResults[i])
-          if (p.end != TracedPath::Barrier && p.sinkPort != dangling[i]) best = &p;
-      if (best) found.push_back(best);
+    for (std::size_t i = 0; i < best.size(); ++i) {
+      if (best[i]) found.push_back(best[i]);
       else failed[dangling[i]] = 1;
     }
     std::sort(found.begin(), found.end(), [](const TracedPath* a, const TracedPath* b) {
@@ -229,16 +235,14 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
 
   // 2. The solving cycle.
   runSolvingCycle(graph, layout, params, SelectionWeights::Length);
-  {
-    std::vector<char> used = usedPorts(graph, layout);
-    layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
-  }
   // 2b. Completion: the separatrices that keep dangling ports apart are freed and the ports
   // around them matched again, where that leaves fewer t-junctions.
   if (params.completionTrials > 0) {
     const auto start = Clock::now();
     layout.completion = completeLayout(graph, layout, params);
     layout.completionSeconds = since(start);
+  }
+  {
     std::vector<char> used = usedPorts(graph, layout);
     layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
   }

@@ -19,9 +19,8 @@ struct EdgeGraph {
   };
   std::vector<Edge> edges;
   std::vector<std::vector<int>> vertexEdges;
-  std::vector<std::array<int, 4>> quadEdges;
 
-  explicit EdgeGraph(const QuadMesh& mesh) : vertexEdges(mesh.positions.size()), quadEdges(mesh.quads.size()) {
+  explicit EdgeGraph(const QuadMesh& mesh) : vertexEdges(mesh.positions.size()) {
     std::unordered_map<std::uint64_t, int> index;
     index.reserve(4 * mesh.quads.size());
     for (int q = 0; q < mesh.numQuads(); ++q)
@@ -39,7 +38,6 @@ struct EdgeGraph {
         Edge& e = edges[it->second];
         if (e.numQuads == 2) throw std::invalid_argument("base complex: an edge is in more than two quads");
         e.quads[e.numQuads++] = q;
-        quadEdges[q][i] = it->second;
       }
   }
 

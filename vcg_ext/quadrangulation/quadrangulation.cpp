@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace fcql {
@@ -312,6 +313,23 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       break;
     }
   }
+  // The whole stage without the field, for the two fallbacks below: run at most once (none
+  // if neither needs it); null if it fails.
+  std::optional<QuadrangulationResult> withoutField;
+  bool withoutFieldRun = false;
+  auto stageWithoutField = [&]() -> const QuadrangulationResult* {
+    if (!withoutFieldRun) {
+      withoutFieldRun = true;
+      QuadrangulationOptions plain = active;
+      plain.fieldDirections.clear();
+      try {
+        withoutField = quadrangulate(layout, plain);
+      } catch (const std::runtime_error&) {
+        // The stage without the field fails where this one did not: keep this one.
+      }
+    }
+    return withoutField ? &*withoutField : nullptr;
+  };
   {
     // Folds left by the field-aligned pass the refinements kept: other ways to sample it,
     // kept if they fold fewer and stay within the bound (or no farther than this one).
@@ -323,34 +341,19 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     // Still folded: the whole stage without the field (its own refinements), kept if it folds
     // fewer, so that the field never leaves more folds than the stage without it.
     const int left = active.fieldDirections.empty() ? 0 : foldedQuads(r.mesh);
-    if (left > 0) {
-      QuadrangulationOptions plain = active;
-      plain.fieldDirections.clear();
-      try {
-        QuadrangulationResult without = quadrangulate(layout, plain);
-        if (foldedQuads(without.mesh) < left) {
-          r = std::move(without);
-          r.foldsWithoutField = true;
-          r.foldsResmoothed = r.foldsResampled = false;
-        }
-      } catch (const std::runtime_error&) {
-        // The stage without the field fails where this one did not: keep this one.
+    if (left > 0)
+      if (const QuadrangulationResult* without = stageWithoutField(); without && foldedQuads(without->mesh) < left) {
+        r = *without;
+        r.foldsWithoutField = true;
+        r.foldsResmoothed = r.foldsResampled = false;
       }
-    }
   }
   if (r.deviationBound > limit && !active.fieldDirections.empty()) {
     // Refined, the field-aligned maps still miss the bound: the whole stage without the field
     // (its own refinements) is kept if it meets it.
-    QuadrangulationOptions plain = active;
-    plain.fieldDirections.clear();
-    try {
-      QuadrangulationResult without = quadrangulate(layout, plain);
-      if (without.deviationBound <= limit) {
-        r = std::move(without);
-        r.boundWithoutField = true;
-      }
-    } catch (const std::runtime_error&) {
-      // It misses the bound too: the error below says so for the field-aligned one.
+    if (const QuadrangulationResult* without = stageWithoutField(); without && without->deviationBound <= limit) {
+      r = *without;
+      r.boundWithoutField = true;
     }
   }
   r.deviationLimit = limit;
