@@ -2,41 +2,65 @@
 
 #include "field/field_io.h"
 
-#include <cstdio>
 #include <utility>
 
 namespace fcql_meshlab {
 
-FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params,
+namespace {
+
+bool hasStoredField(const CMeshO& cm) {
+  if (!hasFaceField(cm)) return false;
+  for (const CFaceO& f : cm.face)
+    if (!f.IsD() && f.cPD1().SquaredNorm() > 0) return true;
+  return false;
+}
+
+fcql::MeshInput meshInput(const ConvertedMesh& converted, const std::string& meshName) {
+  fcql::MeshInput input;
+  input.mesh = &converted.mesh;
+  input.name = meshName;
+  input.weldedVertices = converted.weldedVertices;
+  input.weldingNote = converted.weldingNote;
+  return input;
+}
+
+}  // namespace
+
+FieldStepResult computeFieldStep(const CMeshO& cm, const std::string& meshName, const fcql::PipelineParameters& params,
                                  const Progress& progress) {
   FieldStepResult r;
   progress(0, "converting the mesh");
-  auto t0 = Clock::now();
+  const auto start = Clock::now();
   r.converted = toSurfaceMesh(cm);
-  r.conversionSeconds = secondsSince(t0);
-
-  progress(10, "cross field");
-  auto t1 = Clock::now();
-  if (!params.fieldFile.empty()) {
-    r.field = fcql::loadField(r.converted.mesh, params.fieldFile);  // throws FieldError
-    r.fieldFile = params.fieldFile;
-  } else if (params.useExisting && hasFaceField(cm)) {
-    r.field = readFaceField(cm, r.converted);
-    r.keptExistingField = true;
-  } else {
-    r.existingFieldMissing = params.useExisting;
-    fcql::FieldGenerationOptions options;
-    options.sharpAngleDeg = params.sharpAngleDeg;
-    options.scale = params.fieldScale;
-    r.field = fcql::generateCrossField(r.converted.mesh, options, &r.generation);
+  fcql::MeshInput input = meshInput(r.converted, meshName);
+  input.loadSeconds = secondsSince(start);
+  fcql::CrossField existing;
+  fcql::FieldSource source;
+  if (params.useExisting && hasFaceField(cm)) {
+    existing = readFaceField(cm, r.converted);
+    source.kept = &existing;
   }
-  r.fieldSeconds = secondsSince(t1);
+  const ConvertedMesh& converted = r.converted;
+  source.asStored = [&converted](const fcql::CrossField& field) { return fieldAsStored(converted, field); };
+  r.stage = fcql::runFieldStage(input, params, source, observerOf(progress));
+  return r;
+}
 
-  progress(80, "singularities and ports");
-  auto t2 = Clock::now();
-  r.analysis = fcql::analyzeField(r.converted.mesh, r.field);
-  r.analysisSeconds = secondsSince(t2);
-  progress(100, "cross field done");
+FieldStepResult readStoredFieldStep(const CMeshO& cm, const std::string& meshName,
+                                    const fcql::PipelineParameters& params, const Progress& progress) {
+  if (!hasStoredField(cm)) throw fcql::FieldError(kNoFieldMessage);
+  FieldStepResult r;
+  const auto start = Clock::now();
+  r.converted = toSurfaceMesh(cm);
+  fcql::MeshInput input = meshInput(r.converted, meshName);
+  input.loadSeconds = secondsSince(start);
+  const fcql::CrossField stored = readFaceField(cm, r.converted);
+  fcql::PipelineParameters keep = params;
+  keep.fieldFile.clear();
+  keep.useExisting = true;
+  fcql::FieldSource source;
+  source.kept = &stored;
+  r.stage = fcql::runFieldStage(input, keep, source, observerOf(progress));
   return r;
 }
 
@@ -47,7 +71,8 @@ void storeFieldStep(MeshModel& mm, const FieldStepResult& r) {
   CMeshO& cm = mm.cm;
   const ConvertedMesh& cv = r.converted;
 
-  writeFaceField(cm, cv, r.field);
+  const fcql::FieldAnalysis& analysis = r.stage.analysis;
+  writeFaceField(cm, cv, r.stage.field);
 
   // Per-vertex index × 4 in the quality; the singular flag as a bool attribute and selection.
   for (auto& v : cm.vert)
@@ -56,8 +81,8 @@ void storeFieldStep(MeshModel& mm, const FieldStepResult& r) {
       v.ClearS();
     }
   const int nv = cv.mesh.numVertices();
-  for (int v = 0; v < nv && v < int(r.analysis.vertexIndexQuarters.size()); ++v)
-    cm.vert[cv.meshLabVertex[v]].Q() = Scalarm(r.analysis.vertexIndexQuarters[v]);
+  for (int v = 0; v < nv && v < int(analysis.vertexIndexQuarters.size()); ++v)
+    cm.vert[cv.meshLabVertex[v]].Q() = Scalarm(analysis.vertexIndexQuarters[v]);
 
   // An attribute of the same name but another type (e.g. loaded from a file) is replaced.
   auto singular = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<bool>(cm, kSingularAttribute);
@@ -66,55 +91,12 @@ void storeFieldStep(MeshModel& mm, const FieldStepResult& r) {
     singular = vcg::tri::Allocator<CMeshO>::AddPerVertexAttribute<bool>(cm, kSingularAttribute);
   }
   for (size_t i = 0; i < cm.vert.size(); ++i) singular[i] = false;
-  for (const auto& s : r.analysis.singularities) {
+  for (const auto& s : analysis.singularities) {
     if (s.indexQuarters == 0 || s.vertex < 0 || s.vertex >= nv) continue;
     CVertexO& v = cm.vert[cv.meshLabVertex[s.vertex]];
     singular[v] = true;
     v.SetS();
   }
-}
-
-std::string formatHistogram(const fcql::FieldAnalysis& analysis) {
-  std::string out;
-  for (const auto& h : analysis.interiorHistogram())
-    out += (out.empty() ? "" : ", ") + h.first + ": " + std::to_string(h.second);
-  return out.empty() ? std::string("none") : out;
-}
-
-std::vector<std::string> describeFieldStep(const FieldStepResult& r,
-                                           const FieldParameters& params) {
-  const fcql::SurfaceMesh& m = r.converted.mesh;
-  const fcql::FieldAnalysis& a = r.analysis;
-  std::vector<std::string> lines;
-  lines.push_back("Mesh: " + std::to_string(m.numFaces()) + " faces, " +
-                  std::to_string(m.numVertices()) + " vertices, genus " +
-                  std::to_string(m.genus()) + ", " + std::to_string(m.numBorderLoops()) +
-                  " border loops");
-  if (!r.converted.weldingNote.empty()) lines.push_back("Mesh: " + r.converted.weldingNote);
-  if (!r.fieldFile.empty()) {
-    lines.push_back("Cross field: read from " + r.fieldFile);
-  } else if (r.keptExistingField) {
-    lines.push_back("Cross field: kept the field already on the mesh (per-face PD1/PD2)");
-  } else {
-    char angle[64];
-    std::snprintf(angle, sizeof angle, "%g deg, field scale %g", params.sharpAngleDeg, params.fieldScale);
-    lines.push_back(std::string("Cross field: computed") +
-                    (r.existingFieldMissing ? " (the mesh had no field to keep)" : "") +
-                    ", sharp angle " + angle + ": " + std::to_string(r.generation.sharpEdges) +
-                    " sharp edges, " + std::to_string(r.generation.constrainedFaces) +
-                    " constrained faces");
-  }
-  lines.push_back("Singularities: " + std::to_string(a.numInteriorSingularities()) +
-                  " (by index: " + formatHistogram(a) + "), border singularities: " +
-                  std::to_string(a.numBorderSingularities()) + ", ports: " +
-                  std::to_string(a.numPorts()) + ", index sum: " +
-                  fcql::formatQuarterIndex(a.indexSumQuarters()) + " (Euler characteristic " +
-                  std::to_string(m.eulerCharacteristic()) + ")");
-  for (const std::string& warning : fcql::fieldWarnings(m, a)) lines.push_back("Warning: " + warning);
-  lines.push_back("Time: field " + formatSeconds(r.fieldSeconds) + ", analysis " +
-                  formatSeconds(r.analysisSeconds) + ", total " +
-                  formatSeconds(r.conversionSeconds + r.fieldSeconds + r.analysisSeconds));
-  return lines;
 }
 
 }  // namespace fcql_meshlab

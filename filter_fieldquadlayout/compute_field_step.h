@@ -14,10 +14,9 @@
 
 #include "meshlab_api.h"
 
-#include "field/field_analysis.h"
-#include "field/field_generation.h"
 #include "filter_parameters.h"
 #include "meshlab_mesh_adapter.h"
+#include "pipeline/field_stage.h"
 #include "step_common.h"
 
 #include <string>
@@ -27,27 +26,25 @@ namespace fcql_meshlab {
 
 constexpr const char* kSingularAttribute = "fcql_singular";
 
+/// The message of the error thrown when filters 2-4 find no field on the mesh.
+constexpr const char* kNoFieldMessage = "no cross field on the mesh: run Compute Cross Field first";
+
 struct FieldStepResult {
   ConvertedMesh converted;
-  fcql::CrossField field;
-  fcql::FieldAnalysis analysis;
-  bool keptExistingField = false;     ///< the field came from the mesh's PD1
-  std::string fieldFile;              ///< the field came from this file (if not empty)
-  bool existingFieldMissing = false;  ///< use_existing was asked but the mesh had no field
-  fcql::FieldGenerationReport generation;
-  double conversionSeconds = 0, fieldSeconds = 0, analysisSeconds = 0;
+  fcql::FieldStageResult stage;  ///< the field as the document stores it, its analysis, figures, log
 };
 
-FieldStepResult computeFieldStep(const CMeshO& cm, const FieldParameters& params,
+/// Filter 1: the mesh converted and the pipeline's field stage run on it (a file, the field
+/// already on the mesh if asked, or a computed one). The field is analysed as the document
+/// will store it (single precision in MeshLab 2020.09), so later filters find the same.
+FieldStepResult computeFieldStep(const CMeshO& cm, const std::string& meshName, const fcql::PipelineParameters& params,
                                  const Progress& progress);
 
+/// Filters 2-4: the field Compute Cross Field left on the mesh (per-face PD1), kept and
+/// analysed by the field stage. Throws fcql::FieldError(kNoFieldMessage) if there is none.
+FieldStepResult readStoredFieldStep(const CMeshO& cm, const std::string& meshName,
+                                    const fcql::PipelineParameters& params, const Progress& progress);
+
 void storeFieldStep(MeshModel& mm, const FieldStepResult& result);
-
-/// Lines for the MeshLab log: sizes, field source, singularities by index, ports, times.
-std::vector<std::string> describeFieldStep(const FieldStepResult& result,
-                                           const FieldParameters& params);
-
-/// "-1/4: 16, 1/4: 8", or "none".
-std::string formatHistogram(const fcql::FieldAnalysis& analysis);
 
 }  // namespace fcql_meshlab

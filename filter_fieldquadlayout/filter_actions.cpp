@@ -4,18 +4,15 @@
 #include "filter_parameters.h"
 #include "layout_step.h"
 #include "quad_step.h"
-#include "stored_field.h"
 #include "trace_step.h"
 
 #include <exception>
+#include <memory>
 #include <new>
 
 namespace fcql_meshlab {
 
 namespace {
-
-// How All Steps splits its progress bar between the stages (percent).
-constexpr int kAllFieldEnd = 10, kAllTraceEnd = 45, kAllLayoutEnd = 80;
 
 const char* const kNeedsField =
     "<br>Needs the cross field left on the mesh by <i>Compute Cross Field</i> (run it first; "
@@ -27,185 +24,98 @@ const char* const kReference =
     "Cignoni</i><br><b>\"Tracing Field-Coherent Quad Layouts\"</b><br>Computer Graphics Forum "
     "35(7), Pacific Graphics 2016.";
 
+using fcql::PipelineStage;
 
-void addInt(FilterOutcome& o, const char* key, long long value) {
-  o.figures.push_back({key, double(value), true});
-}
-void addSeconds(FilterOutcome& o, const char* key, double seconds) {
-  o.figures.push_back({key, seconds, false});
-}
-void addLines(FilterOutcome& o, const std::vector<std::string>& lines) {
-  o.log.insert(o.log.end(), lines.begin(), lines.end());
-}
+bool upTo(PipelineStage stage, PipelineStage last) { return int(stage) <= int(last); }
 
-// ---- the figures of each stage, for pymeshlab's dictionary --------------------------------
+/// What a filter ran: the field stage and the later ones up to its own.
+struct StageRun {
+  FieldStepResult field;
+  std::unique_ptr<TraceStepResult> trace;
+  std::unique_ptr<LayoutStepResult> layout;
+  std::unique_ptr<QuadStepResult> quad;
+};
 
-void addFieldFigures(FilterOutcome& o, const fcql::SurfaceMesh& mesh,
-                     const fcql::FieldAnalysis& a) {
-  addInt(o, "faces", mesh.numFaces());
-  addInt(o, "vertices", mesh.numVertices());
-  addInt(o, "genus", mesh.genus());
-  addInt(o, "border_loops", mesh.numBorderLoops());
-  addInt(o, "singularities", a.numInteriorSingularities());
-  addInt(o, "border_singularities", a.numBorderSingularities());
-  addInt(o, "ports", a.numPorts());
+/// The progress bar's share of each stage (end percent of field, trace, layout; quad ends at
+/// 100), by the last stage the filter runs; the field is computed only by filters 1 and 5.
+const int* progressEnds(PipelineStage last, bool computeField) {
+  static const int all[] = {10, 45, 80}, trace[] = {5, 100, 100}, layout[] = {2, 40, 100}, quad[] = {2, 35, 70},
+                   field[] = {100, 100, 100};
+  if (computeField) return last == PipelineStage::Field ? field : all;
+  return last == PipelineStage::Trace ? trace : last == PipelineStage::Layout ? layout : quad;
 }
 
-void addTraceFigures(FilterOutcome& o, const TraceStepResult& t) {
-  addInt(o, "graph_g_nodes", t.trace.graph->numNodes());
-  addInt(o, "graph_g_arcs", t.trace.graph->numArcs());
-  addInt(o, "h_arcs", long(t.trace.h.arcs.size()));
-  addInt(o, "tangential_pairs", long(t.trace.h.tangentialPairs.size()));
-  addSeconds(o, "time_graph", t.trace.graphSeconds);
-  addSeconds(o, "time_tracing", t.trace.tracingSeconds);
+/// Runs the pipeline's stages up to `last`: filters 1 and 5 compute the field, filters 2-4
+/// start from the one on the mesh. Nothing is written to the document.
+StageRun runStages(const MeshModel& mm, const fcql::PipelineParameters& params, bool computeField, PipelineStage last,
+                   const Progress& progress) {
+  const int* end = progressEnds(last, computeField);
+  const std::string name = mm.label().toStdString();
+  StageRun r;
+  r.field = computeField ? computeFieldStep(mm.cm, name, params, progress.sub(0, end[0]))
+                         : readStoredFieldStep(mm.cm, name, params, progress.sub(0, end[0]));
+  const fcql::SurfaceMesh& mesh = r.field.converted.mesh;
+  const fcql::CrossField& field = r.field.stage.field;
+  const fcql::FieldAnalysis& analysis = r.field.stage.analysis;
+  // A quad count out of reach fails before any tracing.
+  if (last == PipelineStage::Quad) fcql::quadTargetEdge(mesh, params, fcql::ParameterNaming::FilterName);
+  if (upTo(PipelineStage::Trace, last))
+    r.trace.reset(new TraceStepResult(computeTraceStep(mesh, field, analysis, params, progress.sub(end[0], end[1]))));
+  if (upTo(PipelineStage::Layout, last))
+    r.layout.reset(new LayoutStepResult(
+        computeLayoutStep(mesh, field, analysis, r.trace->trace, params, progress.sub(end[1], end[2]))));
+  if (last == PipelineStage::Quad)
+    r.quad.reset(new QuadStepResult(computeQuadStep(mesh, field, r.layout->layout, params, progress.sub(end[2], 100))));
+  return r;
 }
 
-void addLayoutFigures(FilterOutcome& o, const LayoutStepResult& r) {
-  const fcql::Layout& l = r.layout.layout;
-  addInt(o, "separatrices", long(l.separatrices.size()));
-  addInt(o, "patches", r.layout.patches.numPatches());
-  addInt(o, "invalid_patches", r.layout.patches.numInvalidPatches());
-  addInt(o, "t_junctions", l.tJunctions);
-  addInt(o, "border_connections", l.borderConnections);
-  addInt(o, "iterations", l.iterations);
-  addInt(o, "dangling_ports", l.danglingAfterCycle);  // as fcql's layout.dangling_ports
-  addInt(o, "unresolved_ports", long(l.unresolvedPorts.size()));
-  addInt(o, "completion_accepted", l.completion.accepted);
-  addInt(o, "dead_ends_removed", l.deadEndsRemoved);
-  addInt(o, "added_corners", r.layout.patches.addedCorners);
-  addInt(o, "ilp_time_limited", l.ilpTimeLimited);
-  addSeconds(o, "time_ilp", l.ilpSeconds);
-  addSeconds(o, "time_layout", r.seconds);
+/// Writes what the filter stores: the stages from `firstStored` on (filters 2-4 store only
+/// their own stage, filters 1 and 5 all).
+void store(MeshDocument& md, MeshModel& mm, const StageRun& r, PipelineStage firstStored) {
+  if (firstStored == PipelineStage::Field) storeFieldStep(mm, r.field);
+  if (r.trace && upTo(firstStored, PipelineStage::Trace)) storeTraceStep(md, mm, r.field.converted, *r.trace);
+  if (r.layout && upTo(firstStored, PipelineStage::Layout)) storeLayoutStep(md, mm, r.field.converted, *r.layout);
+  if (r.quad) storeQuadStep(md, *r.quad);
 }
 
-void addQuadFigures(FilterOutcome& o, const QuadStepResult& q) {
-  addInt(o, "quads", q.quad.mesh.numQuads());
-  addInt(o, "quad_vertices", q.quad.mesh.numVertices());
-  addInt(o, "irregular_vertices", q.quad.report.irregularVertices);
-  addInt(o, "base_complex_patches", q.baseComplexPatches);
-  addInt(o, "quad_genus", q.quad.report.genus);
-  addInt(o, "split_patches", q.quad.splitPatches);
-  addInt(o, "time_limited_parts", q.quad.timeLimitedParts);
-  addInt(o, "inverted_quads", q.invertedQuads);
-  addSeconds(o, "time_quadrangulation", q.seconds);
-}
-
-// ---- the filters ----------------------------------------------------------------------------
-
-FilterOutcome computeCrossField(MeshModel& mm, const RichParameterList& parameters,
-                                vcg::CallBackPos* cb) {
-  const FieldParameters params = readFieldParameters(parameters);  // throws ParameterError
-  const FieldStepResult result = computeFieldStep(mm.cm, params, Progress{cb});
-  storeFieldStep(mm, result);
+/// The stages' log lines and figures, what was stored, and the last line with every figure.
+FilterOutcome outcomeOf(const StageRun& r, PipelineStage firstStored, Clock::time_point start) {
   FilterOutcome o;
-  addLines(o, describeFieldStep(result, params));
-  addFieldFigures(o, result.converted.mesh, result.analysis);
-  addSeconds(o, "time_field", result.conversionSeconds + result.fieldSeconds +
-                                  result.analysisSeconds);
+  appendLog(o.log, r.field.stage.log);
+  o.figures = r.field.stage.figures;
+  const auto storedLines = [&](PipelineStage stage, const std::vector<std::string>& lines) {
+    if (upTo(firstStored, stage)) o.log.insert(o.log.end(), lines.begin(), lines.end());
+  };
+  if (r.trace) {
+    appendLog(o.log, r.trace->trace.log);
+    storedLines(PipelineStage::Trace, describeTraceLayers(*r.trace));
+    o.figures.append(r.trace->trace.figures);
+  }
+  if (r.layout) {
+    appendLog(o.log, r.layout->layout.log);
+    storedLines(PipelineStage::Layout, describeLayoutLayers(*r.layout));
+    o.figures.append(r.layout->layout.figures);
+  }
+  if (r.quad) {
+    appendLog(o.log, r.quad->quad.log);
+    storedLines(PipelineStage::Quad, describeQuadLayer(*r.quad));
+    o.figures.append(r.quad->quad.figures);
+  }
+  o.figures.set("time_s.total", secondsSince(start));
+  o.log.push_back("Figures: " + o.figures.toFlatJson());
   return o;
 }
 
-// Filters 2-4: parameters first (a bad value fails before any work), then the stored field,
-// the stages, and the document writes last.
-
-FilterOutcome traceSeparatrices(MeshDocument& md, MeshModel& mm,
-                                const RichParameterList& parameters, vcg::CallBackPos* cb) {
-  const TracingParameters tp = readTracingParameters(parameters);
-  const Progress progress{cb};
-  progress(0, "reading the cross field");
-  const StoredField s = readStoredField(mm.cm);
-  const TraceStepResult t =
-      computeTraceStep(s.converted.mesh, s.field, s.analysis, tp, progress.sub(5, 100));
-  storeTraceStep(md, mm, s.converted, t);
-  FilterOutcome o;
-  addLines(o, describeTraceStep(t, true));
-  addFieldFigures(o, s.converted.mesh, s.analysis);
-  addTraceFigures(o, t);
-  return o;
-}
-
-FilterOutcome solveLayout(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
-                          vcg::CallBackPos* cb) {
-  const TracingParameters tp = readTracingParameters(parameters);
-  const LayoutParameters lp = readLayoutParameters(parameters);
-  const Progress progress{cb};
-  progress(0, "reading the cross field");
-  const StoredField s = readStoredField(mm.cm);
-  const fcql::SurfaceMesh& mesh = s.converted.mesh;
-  const TraceStepResult t = computeTraceStep(mesh, s.field, s.analysis, tp, progress.sub(2, 40));
-  const LayoutStepResult l =
-      computeLayoutStep(mesh, s.field, s.analysis, t.trace, lp, progress.sub(40, 100));
-  storeLayoutStep(md, mm, s.converted, l);
-  FilterOutcome o;
-  addLines(o, describeTraceStep(t, false));
-  addLines(o, describeLayoutStep(l, true));
-  addFieldFigures(o, mesh, s.analysis);
-  addTraceFigures(o, t);
-  addLayoutFigures(o, l);
-  return o;
-}
-
-FilterOutcome quadrangulate(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
-                            vcg::CallBackPos* cb) {
-  const TracingParameters tp = readTracingParameters(parameters);
-  const LayoutParameters lp = readLayoutParameters(parameters);
-  const QuadParameters qp = readQuadParameters(parameters);
-  const Progress progress{cb};
-  progress(0, "reading the cross field");
-  const StoredField s = readStoredField(mm.cm);
-  const fcql::SurfaceMesh& mesh = s.converted.mesh;
-  const TraceStepResult t = computeTraceStep(mesh, s.field, s.analysis, tp, progress.sub(2, 35));
-  const LayoutStepResult l =
-      computeLayoutStep(mesh, s.field, s.analysis, t.trace, lp, progress.sub(35, 70));
-  const QuadStepResult q = computeQuadStep(mesh, s.field, l.layout, lp, qp, progress.sub(70, 100));
-  storeQuadStep(md, q);
-  FilterOutcome o;
-  addLines(o, describeTraceStep(t, false));
-  addLines(o, describeLayoutStep(l, false));
-  addLines(o, describeQuadStep(q));
-  addFieldFigures(o, mesh, s.analysis);
-  addTraceFigures(o, t);
-  addLayoutFigures(o, l);
-  addQuadFigures(o, q);
-  return o;
-}
-
-FilterOutcome allSteps(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
-                       vcg::CallBackPos* cb) {
+/// A filter: parameters first (a bad value fails before any work), then the stages, and the
+/// document writes last, so that a failure leaves the document as it was.
+FilterOutcome runPipelineFilter(MeshDocument& md, MeshModel& mm, const RichParameterList& parameters,
+                                vcg::CallBackPos* cb, PipelineStage last, bool computeField) {
   const auto start = Clock::now();
-  const FieldParameters fp = readFieldParameters(parameters);
-  const TracingParameters tp = readTracingParameters(parameters);
-  const LayoutParameters lp = readLayoutParameters(parameters);
-  const QuadParameters qp = readQuadParameters(parameters);
-  const Progress progress{cb};
-  const FieldStepResult f = computeFieldStep(mm.cm, fp, progress.sub(0, kAllFieldEnd));
-  // The later stages run on the field as the document will hold it (single precision), as
-  // the separate filters would read it back: All Steps gives exactly their results.
-  const fcql::SurfaceMesh& mesh = f.converted.mesh;
-  const fcql::CrossField field = fieldAsStored(f.converted, f.field);
-  const fcql::FieldAnalysis analysis = fcql::analyzeField(mesh, field);
-  const TraceStepResult t =
-      computeTraceStep(mesh, field, analysis, tp, progress.sub(kAllFieldEnd, kAllTraceEnd));
-  const LayoutStepResult l = computeLayoutStep(mesh, field, analysis, t.trace, lp,
-                                               progress.sub(kAllTraceEnd, kAllLayoutEnd));
-  const QuadStepResult q =
-      computeQuadStep(mesh, field, l.layout, lp, qp, progress.sub(kAllLayoutEnd, 100));
-  storeFieldStep(mm, f);
-  storeTraceStep(md, mm, f.converted, t);
-  storeLayoutStep(md, mm, f.converted, l);
-  storeQuadStep(md, q);
-  FilterOutcome o;
-  addLines(o, describeFieldStep(f, fp));
-  addLines(o, describeTraceStep(t, true));
-  addLines(o, describeLayoutStep(l, true));
-  addLines(o, describeQuadStep(q));
-  addFieldFigures(o, mesh, analysis);
-  addSeconds(o, "time_field", f.conversionSeconds + f.fieldSeconds + f.analysisSeconds);
-  addTraceFigures(o, t);
-  addLayoutFigures(o, l);
-  addQuadFigures(o, q);
-  addSeconds(o, "time_total", secondsSince(start));
-  return o;
+  const fcql::PipelineParameters params = readPipelineParameters(parameters);  // throws ParameterError
+  const StageRun run = runStages(mm, params, computeField, last, Progress{cb});
+  const PipelineStage firstStored = computeField ? PipelineStage::Field : last;
+  store(md, mm, run, firstStored);
+  return outcomeOf(run, firstStored, start);
 }
 
 }  // namespace
@@ -340,25 +250,25 @@ int filterPostConditions(FilterId id) {
 void addFilterParameters(FilterId id, RichParameterList& parameters) {
   switch (id) {
     case FP_COMPUTE_CROSS_FIELD:
-      addFieldParameters(parameters);
+      addStageParameters(fcql::PipelineStage::Field, parameters);
       break;
     case FP_TRACE_SEPARATRICES:
-      addTracingParameters(parameters);
+      addStageParameters(fcql::PipelineStage::Trace, parameters);
       break;
     case FP_SOLVE_LAYOUT:
-      addTracingParameters(parameters);
-      addLayoutParameters(parameters);
+      addStageParameters(fcql::PipelineStage::Trace, parameters);
+      addStageParameters(fcql::PipelineStage::Layout, parameters);
       break;
     case FP_QUADRANGULATE:
-      addTracingParameters(parameters);
-      addLayoutParameters(parameters);
-      addQuadParameters(parameters);
+      addStageParameters(fcql::PipelineStage::Trace, parameters);
+      addStageParameters(fcql::PipelineStage::Layout, parameters);
+      addStageParameters(fcql::PipelineStage::Quad, parameters);
       break;
     case FP_ALL_STEPS:
-      addFieldParameters(parameters);
-      addTracingParameters(parameters);
-      addLayoutParameters(parameters);
-      addQuadParameters(parameters);
+      addStageParameters(fcql::PipelineStage::Field, parameters);
+      addStageParameters(fcql::PipelineStage::Trace, parameters);
+      addStageParameters(fcql::PipelineStage::Layout, parameters);
+      addStageParameters(fcql::PipelineStage::Quad, parameters);
       break;
   }
 }
@@ -373,11 +283,11 @@ FilterOutcome runFilter(FilterId id, MeshDocument& md, const RichParameterList& 
   // Everything is computed before the document is written, so any exception leaves it as it was.
   try {
     switch (id) {
-      case FP_COMPUTE_CROSS_FIELD: return computeCrossField(*mm, parameters, cb);
-      case FP_TRACE_SEPARATRICES: return traceSeparatrices(md, *mm, parameters, cb);
-      case FP_SOLVE_LAYOUT: return solveLayout(md, *mm, parameters, cb);
-      case FP_QUADRANGULATE: return quadrangulate(md, *mm, parameters, cb);
-      case FP_ALL_STEPS: return allSteps(md, *mm, parameters, cb);
+      case FP_COMPUTE_CROSS_FIELD: return runPipelineFilter(md, *mm, parameters, cb, PipelineStage::Field, true);
+      case FP_TRACE_SEPARATRICES: return runPipelineFilter(md, *mm, parameters, cb, PipelineStage::Trace, false);
+      case FP_SOLVE_LAYOUT: return runPipelineFilter(md, *mm, parameters, cb, PipelineStage::Layout, false);
+      case FP_QUADRANGULATE: return runPipelineFilter(md, *mm, parameters, cb, PipelineStage::Quad, false);
+      case FP_ALL_STEPS: return runPipelineFilter(md, *mm, parameters, cb, PipelineStage::Quad, true);
     }
   } catch (const std::bad_alloc&) {
     throw failure("out of memory");

@@ -19,6 +19,8 @@
 
 #include "meshlab_api.h"
 
+#include "pipeline/figures.h"
+
 #include <QString>
 
 #include <stdexcept>
@@ -52,19 +54,13 @@ int filterPostConditions(FilterId id);
 /// Adds the filter's parameters (filter_parameters.h) to `list`.
 void addFilterParameters(FilterId id, RichParameterList& list);
 
-/// One figure of a run, for pymeshlab's returned dictionary: an integer count or a time in
-/// seconds (keys "time_*").
-struct FilterFigure {
-  std::string key;
-  double value = 0;
-  bool isInteger = true;
-};
-
 struct FilterOutcome {
-  std::vector<std::string> log;  ///< lines for the log; problems start with "Warning: "
-  /// singularities, ports, graph_g_nodes, h_arcs, patches, t_junctions, quads,
-  /// irregular_vertices, time_* ... (which ones depends on the filter)
-  std::vector<FilterFigure> figures;
+  /// Lines for the log; problems start with "Warning: ". The last is "Figures: {...}", all the
+  /// figures as one line of flat JSON.
+  std::vector<std::string> log;
+  /// The figures of every stage the filter ran, under the names of fcql's stats.json
+  /// (vcg_ext/pipeline/figures.h): what pymeshlab's returned dictionary holds.
+  fcql::Figures figures;
 };
 
 /// Why a filter failed: what() is the whole message, "<filter name> failed: <reason>".

@@ -72,7 +72,14 @@ std::map<std::string, QVariant> FieldQuadLayoutFilterPlugin::applyFilter(
     else
       log(line);
   std::map<std::string, QVariant> figures;
-  for (const FilterFigure& f : outcome.figures)
-    figures[f.key] = f.isInteger ? QVariant(int(f.value)) : QVariant(f.value);
+  for (const fcql::Figures::Entry& f : outcome.figures.entries()) {
+    switch (f.kind) {
+      case fcql::Figures::Entry::Integer: figures[f.key] = QVariant(int(f.integer)); break;  // counts fit; pymeshlab maps int
+      case fcql::Figures::Entry::Real: figures[f.key] = QVariant(f.real); break;
+      case fcql::Figures::Entry::Flag: figures[f.key] = QVariant(f.flag); break;
+      case fcql::Figures::Entry::Text: figures[f.key] = QVariant(QString::fromStdString(f.text)); break;
+      case fcql::Figures::Entry::EmptyObject: break;  // an empty count list: no key
+    }
+  }
   return figures;
 }

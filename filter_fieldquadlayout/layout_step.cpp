@@ -30,11 +30,10 @@ std::vector<int> majorityPatchOfFaces(const fcql::PatchLayout& layout, int numFa
 }
 
 LayoutStepResult computeLayoutStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
-                                   const fcql::FieldAnalysis& analysis, const TraceResult& trace,
-                                   const LayoutParameters& params, const Progress& progress) {
-  const auto start = Clock::now();
+                                   const fcql::FieldAnalysis& analysis, const fcql::TraceStageResult& trace,
+                                   const fcql::PipelineParameters& params, const Progress& progress) {
   LayoutStepResult r;
-  r.layout = solveLayoutStage(mesh, field, analysis, trace, params, progress.sub(0, 95));
+  r.layout = fcql::runLayoutStage(mesh, field, analysis, trace, params, observerOf(progress.sub(0, 95)));
   progress(95, "patches per face");
   const fcql::PatchLayout& p = r.layout.patches;
   r.patchOfFace = majorityPatchOfFaces(p, mesh.numFaces());
@@ -50,7 +49,6 @@ LayoutStepResult computeLayoutStep(const fcql::SurfaceMesh& mesh, const fcql::Cr
   r.patchLayer.vertexQuality.assign(p.positions.size(), 0.f);
   for (std::size_t v = 0; v < p.corner.size() && v < p.positions.size(); ++v)
     r.patchLayer.vertexQuality[v] = p.corner[v] ? 1.f : 0.f;
-  r.seconds = secondsSince(start);
   progress(100, "layout done");
   return r;
 }
@@ -64,20 +62,14 @@ void storeLayoutStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& conve
   addTriangleLayer(md, QString::fromUtf8(kPatchLayoutLayer), r.patchLayer);
 }
 
-std::vector<std::string> describeLayoutStep(const LayoutStepResult& r, bool stored) {
-  std::vector<std::string> lines = describeLayout(r.layout);
-  lines.push_back("Time: layout stage " + formatSeconds(r.seconds));
-  if (!stored) return lines;
+std::vector<std::string> describeLayoutLayers(const LayoutStepResult& r) {
   std::set<int> onFaces(r.patchOfFace.begin(), r.patchOfFace.end());
   onFaces.erase(-1);
-  lines.push_back("Input mesh: " + std::to_string(onFaces.size()) + " of " +
-                  std::to_string(r.layout.patches.numPatches()) +
-                  " patches cover the majority of some face (attribute " + kPatchAttribute +
-                  ", face colour); layer \"" + kPatchLayoutLayer + "\": " +
-                  std::to_string(r.patchLayer.triangles.size()) +
-                  " triangles cut along the separatrices; layer \"" + kSeparatricesLayer +
-                  "\": " + std::to_string(r.layout.layout.separatrices.size()) + " polylines");
-  return lines;
+  return {"Input mesh: " + std::to_string(onFaces.size()) + " of " + std::to_string(r.layout.patches.numPatches()) +
+          " patches cover the majority of some face (attribute " + kPatchAttribute + ", face colour); layer \"" +
+          kPatchLayoutLayer + "\": " + std::to_string(r.patchLayer.triangles.size()) +
+          " triangles cut along the separatrices; layer \"" + kSeparatricesLayer + "\": " +
+          std::to_string(r.layout.layout.separatrices.size()) + " polylines"};
 }
 
 }  // namespace fcql_meshlab

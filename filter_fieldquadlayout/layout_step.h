@@ -18,7 +18,8 @@
 #include "meshlab_api.h"
 
 #include "document_layers.h"
-#include "pipeline_layout.h"
+#include "pipeline/layout_stage.h"
+#include "step_common.h"
 
 #include <string>
 #include <vector>
@@ -31,23 +32,22 @@ constexpr const char* kSeparatricesLayer = "separatrices";
 constexpr const char* kPatchLayoutLayer = "patch layout";
 
 struct LayoutStepResult {
-  LayoutResult layout;
+  fcql::LayoutStageResult layout;
   std::vector<int> patchOfFace;           ///< per SurfaceMesh face (majority by area)
   std::vector<int> separatricesPerFace;   ///< per SurfaceMesh face
   PolylineLayerData polylines;
   TriangleLayerData patchLayer;
-  double seconds = 0;
 };
 
 LayoutStepResult computeLayoutStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
-                                   const fcql::FieldAnalysis& analysis, const TraceResult& trace,
-                                   const LayoutParameters& params, const Progress& progress);
+                                   const fcql::FieldAnalysis& analysis, const fcql::TraceStageResult& trace,
+                                   const fcql::PipelineParameters& params, const Progress& progress);
 
 void storeLayoutStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& converted,
                      const LayoutStepResult& result);
 
-/// Log lines: describeLayout(), the time, and with `stored` what went into the document.
-std::vector<std::string> describeLayoutStep(const LayoutStepResult& result, bool stored);
+/// What the step stored, for the log.
+std::vector<std::string> describeLayoutLayers(const LayoutStepResult& result);
 
 /// Per face of `numFaces`: the patch of the layout triangles covering most of its area
 /// (-1 for a face without triangles, which does not happen on a valid layout).

@@ -1,6 +1,6 @@
 // Filter 4, "Quadrangulate": integer side lengths for the patches of the layout, zero-chain
-// splits, and sampling of every patch into a grid of quads (fcql::quadrangulate, as
-// `fcql quad` runs it).
+// splits, and sampling of every patch into a grid of quads (the pipeline's quad stage, as
+// `fcql run` runs it).
 //
 // What is stored: a new layer "quad mesh". MeshLab has no quads, so each quad is two triangles
 // whose shared diagonal (the shorter one) is flagged faux on both, which is how MeshLab shows
@@ -14,9 +14,8 @@
 
 #include "document_layers.h"
 #include "filter_parameters.h"
-#include "pipeline_layout.h"
-
-#include "quadrangulation/quadrangulation.h"
+#include "pipeline/quad_stage.h"
+#include "step_common.h"
 
 #include <string>
 #include <vector>
@@ -26,26 +25,21 @@ namespace fcql_meshlab {
 constexpr const char* kQuadLayer = "quad mesh";
 
 struct QuadStepResult {
-  fcql::QuadrangulationResult quad;
-  double targetEdgeLength = 0;
-  std::vector<float> scaledJacobian;  ///< per quad
-  int invertedQuads = 0;              ///< quads whose scaled Jacobian is <= 0 (quad.inverted_quads)
-  int baseComplexPatches = -1;        ///< the quad mesh's own patches (quad.base_complex_patches)
-  int layoutPatches = 0;              ///< the layout's patches, for comparison
+  fcql::QuadStageResult quad;
+  std::vector<float> scaledJacobian;  ///< per quad (the face quality of the layer)
   TriangleLayerData layer;
-  double seconds = 0;
 };
 
 /// `mesh` is the input surface (for the bounding-box diagonal), `field` its cross field (each
 /// patch is mapped onto its rectangle along it, as `fcql run` does), `layout` its patch layout.
 /// Throws std::runtime_error if the layout cannot be quadrangulated (e.g. invalid patches).
-QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field, const LayoutResult& layout,
-                               const LayoutParameters& layoutParams,
-                               const QuadParameters& params, const Progress& progress);
+QuadStepResult computeQuadStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
+                               const fcql::LayoutStageResult& layout, const fcql::PipelineParameters& params,
+                               const Progress& progress);
 
 void storeQuadStep(MeshDocument& md, const QuadStepResult& result);
 
-/// Log lines: quads, vertices, irregular vertices, genus, splits, quality, time.
-std::vector<std::string> describeQuadStep(const QuadStepResult& result);
+/// What the step stored, for the log.
+std::vector<std::string> describeQuadLayer(const QuadStepResult& result);
 
 }  // namespace fcql_meshlab

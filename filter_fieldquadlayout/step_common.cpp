@@ -5,12 +5,6 @@
 
 namespace fcql_meshlab {
 
-std::string formatSeconds(double seconds) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f s", seconds);
-  return buffer;
-}
-
 void Progress::operator()(int percent, const std::string& what) const {
   if (!cb) return;
   const int p = std::max(0, std::min(100, percent));
@@ -22,6 +16,16 @@ Progress Progress::sub(int a, int b) const {
   p.from = from + (to - from) * a / 100;
   p.to = from + (to - from) * b / 100;
   return p;
+}
+
+fcql::StageObserver observerOf(const Progress& progress) {
+  fcql::StageObserver o;
+  o.progress = [progress](int percent, const std::string& what) { progress(percent, what); };
+  return o;
+}
+
+void appendLog(std::vector<std::string>& log, const std::vector<fcql::LogLine>& lines) {
+  for (const fcql::LogLine& line : lines) log.push_back(fcql::formatLogLine(line));
 }
 
 }  // namespace fcql_meshlab

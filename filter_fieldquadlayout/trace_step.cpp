@@ -15,9 +15,9 @@ std::vector<const fcql::TracedPath*> candidatePaths(const fcql::SeparatrixGraph&
 
 TraceStepResult computeTraceStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
                                  const fcql::FieldAnalysis& analysis,
-                                 const TracingParameters& params, const Progress& progress) {
+                                 const fcql::PipelineParameters& params, const Progress& progress) {
   TraceStepResult r;
-  r.trace = traceSeparatrices(mesh, field, analysis, params, progress.sub(0, 95));
+  r.trace = fcql::runTraceStage(mesh, field, analysis, params, observerOf(progress.sub(0, 95)));
   progress(95, "candidate separatrices per face");
   const auto paths = candidatePaths(r.trace.h);
   r.candidatesPerFace = pathsPerFace(paths, mesh.numFaces());
@@ -32,18 +32,12 @@ void storeTraceStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& conver
   addPolylineLayer(md, QString::fromUtf8(kCandidatesLayer), r.polylines);
 }
 
-std::vector<std::string> describeTraceStep(const TraceStepResult& r, bool stored) {
-  std::vector<std::string> lines = describeTrace(r.trace);
-  lines.push_back("Time: graph G " + formatSeconds(r.trace.graphSeconds) + ", tracing " +
-                  formatSeconds(r.trace.tracingSeconds));
-  if (!stored) return lines;
+std::vector<std::string> describeTraceLayers(const TraceStepResult& r) {
   int crossed = 0;
   for (int c : r.candidatesPerFace) crossed += c > 0;
-  lines.push_back("Candidate separatrices cross " + std::to_string(crossed) + " of " +
-                  std::to_string(r.candidatesPerFace.size()) + " faces (per-face attribute " +
-                  kCandidatesAttribute + "); layer \"" + kCandidatesLayer + "\": " +
-                  std::to_string(r.polylines.edges.size()) + " edges");
-  return lines;
+  return {"Candidate separatrices cross " + std::to_string(crossed) + " of " + std::to_string(r.candidatesPerFace.size()) +
+          " faces (per-face attribute " + kCandidatesAttribute + "); layer \"" + kCandidatesLayer + "\": " +
+          std::to_string(r.polylines.edges.size()) + " edges"};
 }
 
 }  // namespace fcql_meshlab

@@ -11,7 +11,8 @@
 #include "meshlab_api.h"
 
 #include "document_layers.h"
-#include "pipeline_trace.h"
+#include "pipeline/trace_stage.h"
+#include "step_common.h"
 
 #include <string>
 #include <vector>
@@ -22,7 +23,7 @@ constexpr const char* kCandidatesAttribute = "fcql_candidates";
 constexpr const char* kCandidatesLayer = "candidate separatrices";
 
 struct TraceStepResult {
-  TraceResult trace;
+  fcql::TraceStageResult trace;
   std::vector<int> candidatesPerFace;  ///< per SurfaceMesh face
   PolylineLayerData polylines;
 };
@@ -30,13 +31,14 @@ struct TraceStepResult {
 /// Traces on `mesh`/`field`/`analysis`, which must outlive the result (graph G refers to them).
 TraceStepResult computeTraceStep(const fcql::SurfaceMesh& mesh, const fcql::CrossField& field,
                                  const fcql::FieldAnalysis& analysis,
-                                 const TracingParameters& params, const Progress& progress);
+                                 const fcql::PipelineParameters& params, const Progress& progress);
 
 void storeTraceStep(MeshDocument& md, MeshModel& mm, const ConvertedMesh& converted,
                     const TraceStepResult& result);
 
 /// Log lines: graphs G and H, crossing pairs, times, and with `stored` what went into the
 /// document (false for the filters that trace again but store something else).
-std::vector<std::string> describeTraceStep(const TraceStepResult& result, bool stored);
+/// What the step stored, for the log.
+std::vector<std::string> describeTraceLayers(const TraceStepResult& result);
 
 }  // namespace fcql_meshlab

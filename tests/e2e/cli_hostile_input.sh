@@ -134,7 +134,7 @@ expect 2 out_is_file "a_file: is a file, not a directory" run "$tmp/tet.obj" --o
 expect 2 out_under_file "is a file, not a directory" run "$tmp/tet.obj" --out "$tmp/a_file/sub"
 expect 2 bogus_example "unknown --example 'bogus'" run --example bogus
 expect 2 too_many_quads "asks for about .* quads on this surface, more than the limit" run --example sphere --scale 1e-5
-expect 2 too_many_target_faces "target-faces must be between 1 and 20000000" run --example sphere --target-faces 100000000
+expect 2 too_many_target_faces "target-faces must be between 0 and 20000000" run --example sphere --target-faces 100000000
 
 if [ $failures -gt 0 ]; then echo "$failures check(s) failed"; exit 1; fi
 echo "all cli_hostile_input checks passed"

@@ -115,7 +115,7 @@ expect_error() {  # WHAT ARGS...
 expect_error "--scale 0" --scale 0
 expect_error "--scale 2" --scale 2
 expect_error "--scale and --target-faces" --scale 0.02 --target-faces 100
-expect_error "--target-faces 0" --target-faces 0
+expect_error "--target-faces -1" --target-faces -1
 expect_error "--smooth -1" --smooth -1
 expect_error "--max-deviation -0.1" --max-deviation -0.1
 expect_error "--max-deviation 2" --max-deviation 2

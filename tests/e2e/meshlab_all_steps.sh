@@ -22,7 +22,7 @@ all=$(example_script all_steps) || ml_finish meshlab_all_steps
 steps=$(example_script step_by_step) || ml_finish meshlab_all_steps
 ml_prepare_meshes "$fcql" "$shared"
 
-figures='^(Singularities|Graph G|Graph H|Layout|Closing|Quad mesh|Scaled Jacobian|Zero chains): '
+figures='^(Singularities|Graph G|Graph H|Layout|Closing|Quad mesh|Quality|Zero chains): '
 
 # check_layers NAME RUN LOG: the five saved layers of RUN agree with LOG.
 check_layers() {

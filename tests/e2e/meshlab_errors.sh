@@ -45,14 +45,14 @@ bad_param() {
   expect_failure "$1" "$work/$1.mlx" "$3" "$6"
 }
 
-bad_param k0 "$trace" "Trace Separatrices" k 0 "'k' .* is 0, must be >= 1"
-bad_param alpha_negative "$trace" "Trace Separatrices" alpha -1 "'alpha' .* is -1, must be a number >= 0"
+bad_param k0 "$trace" "Trace Separatrices" k 0 "'k' .* is 0, must be between 1 and 1000000"
+bad_param alpha_negative "$trace" "Trace Separatrices" alpha -1 "'alpha' .* is -1, must be between 0 and 1e\+06"
 bad_param phi90 "$layout" "Solve Layout" phi 90 "'phi' .* is 90, must be between 1 and 45"
 bad_param ilp0 "$layout" "Solve Layout" ilp_time_limit 0 "'ilp_time_limit' .* is 0, must be between 1 and 86400"
 bad_param scale0 "$quad" "Quadrangulate" scale 0 "'scale' .* is 0, must be between 1e-05 and 1"
 bad_param scale2 "$quad" "Quadrangulate" scale 2 "'scale' .* is 2, must be between"
 bad_param all_phi "$all" "All Steps" phi 0.5 "'phi' .* is 0.5, must be between 1 and 45"
-bad_param all_k "$all" "All Steps" k -3 "'k' .* is -3, must be >= 1"
+bad_param all_k "$all" "All Steps" k -3 "'k' .* is -3, must be between 1 and 1000000"
 bad_param all_sharp "$all" "All Steps" sharp_angle 500 "'sharp_angle' .* is 500, must be between 0 and 180"
 bad_param all_scale "$all" "All Steps" scale 0 "'scale' .* is 0"
 bad_param stall_negative "$layout" "Solve Layout" ilp_stall -1 "'ilp_stall' .* is -1, must be between 0 and"

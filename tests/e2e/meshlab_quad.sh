@@ -49,7 +49,7 @@ for i in "${!mesh_names[@]}"; do
     continue
   fi
   quad=$(log_line "$log" '^Quad mesh: ')
-  jac=$(log_line "$log" '^Scaled Jacobian')
+  jac=$(log_line "$log" '^Quality: ')
   mesh=$(log_line "$log" '^Mesh: ')
   echo "$name: $quad"
   [ -n "$quad" ] && [ -n "$jac" ] || { fail "$name: the log lacks the quad mesh figures"; continue; }
@@ -73,7 +73,7 @@ for i in "${!mesh_names[@]}"; do
     awk 'NR == 1 { lo = hi = $1 } { if ($1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { printf "%.3f %.3f\n", lo, hi }')
   awk -v lo="$qmin" -v hi="$qmax" 'BEGIN { exit !(lo >= -1 && hi <= 1.0005) }' ||
     fail "$name: face quality out of [-1, 1]: $qmin..$qmax"
-  case "$jac" in *"min $qmin,"*) ;; *) fail "$name: saved minimum quality $qmin, log: $jac" ;; esac
+  case "$jac" in *"scaled Jacobian min $qmin "*) ;; *) fail "$name: saved minimum quality $qmin, log: $jac" ;; esac
 
   genus=$(printf '%s\n' "$mesh" | grep -oE 'genus [0-9]+')
   case "$quad" in *"$genus,"*) ;; *) fail "$name: the quad mesh does not have the input's $genus: $quad" ;; esac

@@ -84,10 +84,10 @@ expect_error unknown_parameter \
 expect_error wrong_type "Parameter k: unable to cast 'ten' to int" \
   "${field[@]}" apply trace_field_coherent_separatrices k=ten
 expect_error alpha_negative \
-  "Failed to apply filter: trace_field_coherent_separatrices Details: Field-Coherent Quad Layout: Trace Separatrices failed: parameter 'alpha' \(drift penalty\) is -1, must be a number >= 0" \
+  "Failed to apply filter: trace_field_coherent_separatrices Details: Field-Coherent Quad Layout: Trace Separatrices failed: parameter 'alpha' \(drift penalty\) is -1, must be between 0 and 1e\+06" \
   "${field[@]}" apply trace_field_coherent_separatrices alpha=-1
 expect_error k_zero \
-  "Details: Field-Coherent Quad Layout: Solve Layout failed: parameter 'k' \(sinks per source\) is 0, must be >= 1" \
+  "Details: Field-Coherent Quad Layout: Solve Layout failed: parameter 'k' \(sinks per source\) is 0, must be between 1 and 1000000" \
   "${field[@]}" apply solve_field_coherent_quad_layout k=0
 expect_error phi_large \
   "Details: Field-Coherent Quad Layout: All Steps failed: parameter 'phi' .* is 60, must be between 1 and 45" \

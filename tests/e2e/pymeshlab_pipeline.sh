@@ -6,8 +6,8 @@
 #           double_torus`, layout.ply), and
 #   eight   the shared eight.obj (skipped when SHARED_DIR lacks it).
 # Per mesh:
-#  - All Steps (compute_field_coherent_quad_layout) returns the run's figures (singularities,
-#    ports, graph_g_nodes, h_arcs, patches, t_junctions, quads, irregular_vertices, times);
+#  - All Steps (compute_field_coherent_quad_layout) returns the run's figures under stats.json's
+#    names (field.singularities, graph_g.nodes, layout.patches, quad.faces, time_s.*, ...);
 #  - the four steps by their own python names, one after the other in the same MeshSet, give
 #    the same figures, and the layers they add are there;
 #  - the saved "quad mesh" layer has 2 triangles per quad;
@@ -55,14 +55,15 @@ for i in "${!names[@]}"; do
   fi
   all=$(dict_of "$out" compute_field_coherent_quad_layout)
   echo "$name: compute_field_coherent_quad_layout -> $all"
-  for key in singularities ports graph_g_nodes h_arcs patches t_junctions quads irregular_vertices \
-             time_field time_graph time_tracing time_layout time_quadrangulation time_total; do
+  for key in field.singularities field.ports graph_g.nodes graph_h.arcs layout.patches layout.t_junctions \
+             quad.faces quad.irregular_vertices quad.base_complex_patches time_s.field time_s.graph \
+             time_s.tracing time_s.ilp time_s.quadrangulation time_s.total; do
     [ -n "$(dict_value "$all" "$key")" ] || fail "$name: the returned dict lacks '$key'"
   done
-  patches=$(dict_value "$all" patches)
-  quads=$(dict_value "$all" quads)
+  patches=$(dict_value "$all" layout.patches)
+  quads=$(dict_value "$all" quad.faces)
   [ "${patches:-0}" -gt 0 ] && [ "${quads:-0}" -gt 0 ] || fail "$name: no patches or no quads: $all"
-  [ "$(dict_value "$all" invalid_patches)" = 0 ] || fail "$name: invalid patches: $all"
+  [ "$(dict_value "$all" layout.invalid_patches)" = 0 ] || fail "$name: invalid patches: $all"
   for layer in "candidate separatrices" "separatrices" "patch layout" "quad mesh"; do
     grep -q "^mesh [0-9]* '$layer': " "$out" || fail "$name: no layer '$layer' after All Steps"
   done
@@ -80,10 +81,10 @@ for i in "${!names[@]}"; do
     trace=$(dict_of "$steps" trace_field_coherent_separatrices)
     layout=$(dict_of "$steps" solve_field_coherent_quad_layout)
     quad=$(dict_of "$steps" quadrangulate_field_coherent_quad_layout)
-    same "$name" "cross field" "$field" "$all" singularities ports genus
-    same "$name" "trace" "$trace" "$all" graph_g_nodes graph_g_arcs h_arcs tangential_pairs
-    same "$name" "layout" "$layout" "$all" patches t_junctions separatrices
-    same "$name" "quadrangulate" "$quad" "$all" patches quads irregular_vertices
+    same "$name" "cross field" "$field" "$all" field.singularities field.ports mesh.genus
+    same "$name" "trace" "$trace" "$all" graph_g.nodes graph_g.arcs graph_h.arcs graph_h.tangential_pairs
+    same "$name" "layout" "$layout" "$all" layout.patches layout.t_junctions layout.separatrices
+    same "$name" "quadrangulate" "$quad" "$all" layout.patches quad.faces quad.irregular_vertices
     layers=$(grep -c "^mesh [0-9]* '" "$steps")
     # input + candidates (trace) + separatrices + patch layout (solve) + quad mesh
     [ "$layers" = 5 ] || fail "$name: $layers meshes after the four steps, expected 5"
@@ -99,8 +100,8 @@ for i in "${!names[@]}"; do
     cli_q=$(json_key "$cli/stats.json" quad faces)
     cli_i=$(json_key "$cli/stats.json" quad irregular_vertices)
     echo "$name: fcql quad: $cli_p patches, $cli_t t-junctions, $cli_q quads, $cli_i irregular vertices"
-    [ "$cli_p" = "$patches" ] && [ "$cli_t" = "$(dict_value "$all" t_junctions)" ] &&
-      [ "$cli_q" = "$quads" ] && [ "$cli_i" = "$(dict_value "$all" irregular_vertices)" ] ||
+    [ "$cli_p" = "$patches" ] && [ "$cli_t" = "$(dict_value "$all" layout.t_junctions)" ] &&
+      [ "$cli_q" = "$quads" ] && [ "$cli_i" = "$(dict_value "$all" quad.irregular_vertices)" ] ||
       fail "$name: fcql quad gives $cli_p patches / $cli_t t-junctions / $cli_q quads / $cli_i irregular, the host $all"
   else
     fail "$name: fcql quad failed on $as_loaded"; tail -3 "$cli.log"
