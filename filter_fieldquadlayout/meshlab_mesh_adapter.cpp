@@ -1,5 +1,8 @@
 #include "meshlab_mesh_adapter.h"
 
+#include <cmath>
+#include <type_traits>
+
 #include "mesh/vertex_welding.h"
 
 #include <string>
@@ -86,10 +89,19 @@ fcql::CrossField readFaceField(const CMeshO& cm, const ConvertedMesh& converted)
   const int nf = converted.mesh.numFaces();
   std::vector<fcql::Vec3> vectors(nf);
   for (int f = 0; f < nf; ++f) vectors[f] = fromCurvatureDir(cm.face[converted.meshLabFace[f]].cPD1());
-  return fcql::CrossField::fromVectors(converted.mesh, vectors);
+  fcql::CrossField field = fcql::CrossField::fromVectors(converted.mesh, vectors);  // checks every vector
+  // A vector that is already unit and tangent (stored in double precision) is taken as it is:
+  // normalising it again would move it by rounding, and the later filters would not trace
+  // exactly the field All Steps and fcql trace.
+  for (int f = 0; f < nf; ++f)
+    if (std::abs(vectors[f].squaredNorm() - 1) < 1e-13 &&
+        std::abs(vectors[f].dot(converted.mesh.faceNormal(f))) < 1e-13)
+      field.u[f] = vectors[f];
+  return field;
 }
 
 fcql::CrossField fieldAsStored(const ConvertedMesh& converted, const fcql::CrossField& field) {
+  if (std::is_same<Scalarm, double>::value) return field;  // stored exactly, read back as it is
   const int nf = converted.mesh.numFaces();
   std::vector<fcql::Vec3> vectors(nf);
   for (int f = 0; f < nf; ++f)
