@@ -102,12 +102,11 @@ std::vector<FreeingOption> freeingOptions(const GeodesicGraph& graph, const Layo
 
 std::vector<int> tangentialBlockers(const TracedPath& path, const BarrierSet& barriers) {
   std::vector<int> ids;
-  for (const PathSegment& s : path.segments)
-    for (const auto& c : barriers.inFace(s.face)) {
-      if ((s.direction - c.direction) % 2 != 0) continue;  // orthogonal: allowed
-      if (relateChords(s.from, s.to, c.from, c.to) == ChordRelation::Disjoint) continue;
-      ids.push_back(c.id);
-    }
+  for (std::size_t i = 0; i < path.segments.size(); ++i) {
+    const PathSegment& s = path.segments[i];
+    for (const auto& c : barriers.inFace(s.face))
+      if (barrierContact(s, path.points[i].position, path.points[i + 1].position, c).tangential) ids.push_back(c.id);
+  }
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   return ids;
