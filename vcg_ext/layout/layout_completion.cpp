@@ -25,14 +25,6 @@ constexpr int kTrialSinkFactor = 1;
 /// ... and seek no path longer than this many times the longest of those it replaces.
 constexpr double kTrialLengthFactor = 4.0;
 
-std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout) {
-  const std::vector<char> used = usedPorts(graph, layout);
-  std::vector<int> dangling;
-  for (int p = 0; p < int(used.size()); ++p)
-    if (!used[p]) dangling.push_back(p);
-  return dangling;
-}
-
 /// Per dangling port, its paths to the other dangling ports with no barrier in the way, and
 /// what each would have to free. `reasons`, if given, gets for each dangling port why no
 /// separatrix joins it yet.
