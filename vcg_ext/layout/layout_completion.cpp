@@ -25,14 +25,6 @@ constexpr int kTrialSinkFactor = 1;
 /// ... and seek no path longer than this many times the longest of those it replaces.
 constexpr double kTrialLengthFactor = 4.0;
 
-std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout) {
-  const std::vector<char> used = usedPorts(graph, layout);
-  std::vector<int> dangling;
-  for (int p = 0; p < int(used.size()); ++p)
-    if (!used[p]) dangling.push_back(p);
-  return dangling;
-}
-
 /// Per dangling port, its paths to the other dangling ports with no barrier in the way, and
 /// what each would have to free. `reasons`, if given, gets for each dangling port why no
 /// separatrix joins it yet.
@@ -102,12 +94,11 @@ std::vector<FreeingOption> freeingOptions(const GeodesicGraph& graph, const Layo
 
 std::vector<int> tangentialBlockers(const TracedPath& path, const BarrierSet& barriers) {
   std::vector<int> ids;
-  for (const PathSegment& s : path.segments)
-    for (const auto& c : barriers.inFace(s.face)) {
-      if ((s.direction - c.direction) % 2 != 0) continue;  // orthogonal: allowed
-      if (relateChords(s.from, s.to, c.from, c.to) == ChordRelation::Disjoint) continue;
-      ids.push_back(c.id);
-    }
+  for (std::size_t i = 0; i < path.segments.size(); ++i) {
+    const PathSegment& s = path.segments[i];
+    for (const auto& c : barriers.inFace(s.face))
+      if (barrierContact(s, path.points[i].position, path.points[i + 1].position, c).tangential) ids.push_back(c.id);
+  }
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   return ids;

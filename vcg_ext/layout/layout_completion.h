@@ -19,8 +19,8 @@ namespace fcql {
 /// propagated yet (only Full separatrices).
 CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params);
 
-/// The ids of the barriers `path` meets tangentially (in a shared triangle, along the same
-/// direction up to a half turn), increasing and distinct.
+/// The ids of the barriers `path` meets tangentially (barrierContact: in a shared triangle,
+/// along the same direction up to a half turn), increasing and distinct.
 std::vector<int> tangentialBlockers(const TracedPath& path, const BarrierSet& barriers);
 
 /// T-junctions plus unresolved ports that propagation (step 3) would leave on `layout`.

@@ -87,6 +87,14 @@ std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout) {
   return used;
 }
 
+std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout) {
+  const std::vector<char> used = usedPorts(graph, layout);
+  std::vector<int> dangling;
+  for (int p = 0; p < int(used.size()); ++p)
+    if (!used[p]) dangling.push_back(p);
+  return dangling;
+}
+
 void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
                      const SelectionWeights weights, const std::vector<char>* sourcesOnly, int maxSinks,
                      double maxLength) {
@@ -97,11 +105,9 @@ void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutPar
   const int numPorts = int(graph.ports().size());
   SinksOutOfReach outOfReach(numPorts);
   for (int round = 0; round + 1 < params.maxIterations; ++round) {
-    std::vector<char> used = usedPorts(graph, layout);
-    std::vector<int> dangling;
+    const std::vector<int> dangling = danglingPorts(graph, layout);
     std::vector<char> free(numPorts, 0);
-    for (int p = 0; p < numPorts; ++p)
-      if (!used[p]) dangling.push_back(p), free[p] = 1;
+    for (int p : dangling) free[p] = 1;
     if (dangling.size() < 2) break;  // a separatrix needs two free ports
     auto start = Clock::now();
     BarrierSet barriers = layoutBarriers(graph, layout);
@@ -141,12 +147,11 @@ void propagateDanglingPorts(const GeodesicGraph& graph, Layout& layout) {
   const int numPorts = int(graph.ports().size());
   std::vector<char> failed(numPorts, 0);
   for (;;) {
-    std::vector<char> used = usedPorts(graph, layout);
-    std::vector<int> dangling;
+    std::vector<int> dangling = danglingPorts(graph, layout);
     std::vector<char> free(numPorts, 0);
-    for (int p = 0; p < numPorts; ++p)
-      if (!used[p] && !failed[p]) dangling.push_back(p);
-    for (int p = 0; p < numPorts; ++p) free[p] = !used[p];
+    for (int p : dangling) free[p] = 1;
+    // Ports that reached nothing before stay sinks, but are not searched from again.
+    dangling.erase(std::remove_if(dangling.begin(), dangling.end(), [&](int p) { return failed[p] != 0; }), dangling.end());
     if (dangling.empty()) break;
     BarrierSet barriers = layoutBarriers(graph, layout);
     SearchOptions options;
@@ -242,10 +247,7 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
     layout.completion = completeLayout(graph, layout, params);
     layout.completionSeconds = since(start);
   }
-  {
-    std::vector<char> used = usedPorts(graph, layout);
-    layout.danglingAfterCycle = int(std::count(used.begin(), used.end(), 0));
-  }
+  layout.danglingAfterCycle = int(danglingPorts(graph, layout).size());
   if (!params.propagate) return layout;
 
   // 3. Propagation from the ports still dangling.

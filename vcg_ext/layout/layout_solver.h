@@ -123,6 +123,8 @@ int removeDeadEnds(const GeodesicGraph& graph, Layout& layout);
 
 /// Ports that have a separatrix in `layout` (per port, 1 = used).
 std::vector<char> usedPorts(const GeodesicGraph& graph, const Layout& layout);
+/// Ports that have no separatrix in `layout` (the dangling ones), increasing.
+std::vector<int> danglingPorts(const GeodesicGraph& graph, const Layout& layout);
 
 /// What the solving cycle's searches have shown out of reach. A search that found fewer sinks
 /// than it wanted ran out of graph, so every sink it was allowed and did not find is out of

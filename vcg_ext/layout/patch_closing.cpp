@@ -94,8 +94,7 @@ ClosingReport closeNonDiskPatches(const SurfaceMesh& mesh, const CrossField& fie
     const int first = graph->firstPort()[analysis.singularities.size() - 1];
     std::vector<int> ports = {first, first + 1, first + 2, first + 3};
 
-    BarrierSet barriers(mesh.numFaces());
-    for (int i = 0; i < int(layout.separatrices.size()); ++i) barriers.add(layout.separatrices[i].path, i);
+    const BarrierSet barriers = layoutBarriers(*graph, layout);
     SearchOptions options;
     options.maxSinks = 1;
     options.barriers = &barriers;
@@ -150,8 +149,7 @@ ClosingReport closeNonDiskPatches(const SurfaceMesh& mesh, const CrossField& fie
       s.path = results[bestLoop][0];
       layout.separatrices.push_back(std::move(s));
       // The other pair may close the patch now: try it from the same vertex.
-      BarrierSet more(mesh.numFaces());
-      for (int i = 0; i < int(layout.separatrices.size()); ++i) more.add(layout.separatrices[i].path, i);
+      const BarrierSet more = layoutBarriers(*graph, layout);
       options.barriers = &more;
       int q = (bestLoop + 1) % 4;
       options.sinkAllowed.assign(graph->ports().size(), 0);

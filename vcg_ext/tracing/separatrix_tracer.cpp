@@ -104,6 +104,21 @@ bool meetsBeforeEnd(const Vec3& a0, const Vec3& a1, const BarrierSet::Chord& c) 
   return true;
 }
 
+}  // namespace
+
+BarrierContact barrierContact(const PathSegment& segment, const Vec3& from, const Vec3& to,
+                              const BarrierSet::Chord& chord) {
+  BarrierContact contact;
+  const ChordRelation r = relateChords(segment.from, segment.to, chord.from, chord.to);
+  if (r == ChordRelation::Disjoint) return contact;
+  if ((chord.endsInsideA || chord.endsInsideB) && !meetsBeforeEnd(from, to, chord)) return contact;
+  contact.relation = r;
+  contact.tangential = (segment.direction - chord.direction) % 2 == 0;
+  return contact;
+}
+
+namespace {
+
 struct Terminal {
   int pred;
   int barrier;
@@ -194,11 +209,11 @@ public:
             Vec3 crossingPoint = Vec3::Zero();
             Vec3 a0 = nodePosition(g_, u), a1 = nodePosition(g_, v);
             for (const auto& c : chords) {
-              ChordRelation r = relateChords(seg.from, seg.to, c.from, c.to);
+              const BarrierContact contact = barrierContact(seg, a0, a1, c);
+              const ChordRelation r = contact.relation;
               if (r == ChordRelation::Disjoint) continue;
-              if ((c.endsInsideA || c.endsInsideB) && !meetsBeforeEnd(a0, a1, c)) continue;
-              if ((seg.direction - c.direction) % 2 == 0) {
-                blocked = true;  // tangential: never crossed
+              if (contact.tangential) {
+                blocked = true;  // never crossed
                 break;
               }
               if (!opt.tJunctionMode) continue;  // orthogonal crossings are allowed

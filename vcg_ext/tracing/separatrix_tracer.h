@@ -46,6 +46,23 @@ private:
   int count_ = 0;
 };
 
+/// How a straight piece of path meets a barrier chord of the same triangle.
+struct BarrierContact {
+  /// Disjoint: they do not meet, or only beyond the end of a chord that stops inside its
+  /// triangle (a t-junction).
+  ChordRelation relation = ChordRelation::Disjoint;
+  /// They meet and follow the same direction of the triangle's cross up to a half turn: a
+  /// tangential crossing, never allowed (paper Fig. 5). Meeting otherwise, they cross
+  /// orthogonally.
+  bool tangential = false;
+};
+
+/// The tangential-crossing test of a search's move against a barrier, and of a traced path
+/// against a layout's separatrices: `segment` is the piece, from `from` to `to` in its face,
+/// `chord` a barrier in that face.
+BarrierContact barrierContact(const PathSegment& segment, const Vec3& from, const Vec3& to,
+                              const BarrierSet::Chord& chord);
+
 struct SearchOptions {
   int maxSinks = 10;                 ///< k
   const BarrierSet* barriers = nullptr;
