@@ -26,58 +26,24 @@ ml_prepare_meshes "$fcql" "$shared"
 
 # compare NAME: the three records of NAME agree (python3: JSON and the host's dict literal).
 compare() {
-  python3 - "$work/$1/cli/stats.json" "$work/$1/server.log" "$work/$1/host.out" "$1" <<'PY'
+  PYTHONPATH="$here/lib" python3 - "$work/$1/cli/stats.json" "$work/$1/server.log" "$work/$1/host.out" "$1" <<'PY'
 import ast, json, sys
+from figures import compared_keys, differences, flat
 stats_path, server_log, host_out, name = sys.argv[1:]
-
-# A computed field agrees between processes to rounding only (the CLI and MeshLab's process
-# give the sparse solves the same input but not bit for bit the same output), and the quality
-# measures below look up the field per face at each quad's centre: a quad whose centre moves
-# across a face edge by rounding changes them by a step. They are compared to within that; every
-# count, flag, text and other real exactly (to the 6 digits stats.json keeps).
-ROUNDING_SENSITIVE = {"quad.mean_misalignment_deg": 0.01, "quad.misaligned_pct": 0.1,
-                      "quad.misaligned_faces_pct": 0.1, "quad.hausdorff_bound_rel": 1e-6,
-                      "quad.hausdorff_rel": 1e-6, "quad.hausdorff": 1e-5}
-
-def flat(tree, prefix=""):
-    out = {}
-    for key, value in tree.items():
-        if isinstance(value, dict) and value:
-            out.update(flat(value, prefix + key + "."))
-        elif not isinstance(value, dict):
-            out[prefix + key] = value
-    return out
-
 cli = flat(json.load(open(stats_path)))
 lines = [l.split("Figures: ", 1)[1] for l in open(server_log, errors="replace") if "Figures: {" in l]
-server = json.loads(lines[-1]) if lines else {}
+server = flat(json.loads(lines[-1])) if lines else {}
 text = [l.split(" -> ", 1)[1] for l in open(host_out, errors="replace")
         if l.startswith("compute_field_coherent_quad_layout -> ")]
 host = ast.literal_eval(text[0]) if text else {}
-records = {"fcql run": cli, "meshlabserver": server, "pymeshlab host": host}
 bad = []
-for other in ("meshlabserver", "pymeshlab host"):
-    if not records[other]:
-        bad.append("%s gave no figures" % other)
-        continue
-    for k in sorted(set(cli) | set(records[other])):
-        if k.startswith(("time_s.", "input.")):
-            continue
-        a, b = cli.get(k), records[other].get(k)
-        if k in ROUNDING_SENSITIVE:
-            same = a is not None and b is not None and abs(a - b) <= ROUNDING_SENSITIVE[k]
-        elif isinstance(a, float) or isinstance(b, float):
-            same = a is not None and b is not None and abs(a - b) <= 1e-5 * max(abs(a), abs(b), 1e-12)
-        else:
-            same = a == b
-        if not same:
-            bad.append("%s: fcql run %r, %s %r" % (k, a, other, b))
-compared = len([k for k in cli if not k.startswith(("time_s.", "input."))])
+for other, record in (("meshlabserver", server), ("pymeshlab host", host)):
+    bad += differences(cli, record, ("fcql run", other)) if record else ["%s gave no figures" % other]
 if bad:
     print("FAIL: %s: %d differences:\n    %s" % (name, len(bad), "\n    ".join(bad)))
     sys.exit(1)
 print("%s: %d figures agree in all three (layout.patches %s, quad.faces %s)"
-      % (name, compared, cli.get("layout.patches"), cli.get("quad.faces")))
+      % (name, len(compared_keys(cli, {})), cli.get("layout.patches"), cli.get("quad.faces")))
 PY
 }
 

@@ -117,8 +117,10 @@ log_has() { grep -aqE -- "$1" "$log"; }
 focus_main() { xdotool windowfocus --sync "$main_win" 2>/dev/null; sleep 0.2; }
 
 # ---- Xvfb and MeshLab -----------------------------------------------------------------------
+# A 1280x1024 screen: the All Steps dialog, with every parameter of the four stages, is taller
+# than 768 pixels (the MeshLab window itself stays 1024x768).
 exec 5>"$work/display"
-Xvfb -displayfd 5 -screen 0 1024x768x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+Xvfb -displayfd 5 -screen 0 1280x1024x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
 exec 5>&-
 wait_for 10 test -s "$work/display" || abort "Xvfb did not start"

@@ -12,6 +12,9 @@ import sys
 
 import pymeshlab
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from figures import differences, flat  # noqa: E402
+
 readme, work = sys.argv[1], sys.argv[2]
 failures = []
 
@@ -230,46 +233,6 @@ print("note: a MeshLab filter's failure followed by a new MeshSet, without the w
 # ---- 6. the same figures as `fcql run` ---------------------------------------------------------------
 
 
-# A computed field agrees between processes to rounding only (the CLI and MeshLab's process
-# give the sparse solves the same input but not bit for bit the same output), and the quality
-# measures below look up the field per face at each quad's centre: a quad whose centre moves
-# across a face edge by rounding changes them by a step. They are compared to within that; every
-# count, flag, text and other real exactly (to the 6 digits stats.json keeps).
-ROUNDING_SENSITIVE = {"quad.mean_misalignment_deg": 0.01, "quad.misaligned_pct": 0.1,
-                      "quad.misaligned_faces_pct": 0.1, "quad.hausdorff_bound_rel": 1e-6,
-                      "quad.hausdorff_rel": 1e-6, "quad.hausdorff": 1e-5}
-
-
-def flat(tree, prefix=""):
-    """stats.json's nested objects as the dotted keys pymeshlab's dict has."""
-    out = {}
-    for key, value in tree.items():
-        if isinstance(value, dict):
-            out.update(flat(value, prefix + key + "."))
-        else:
-            out[prefix + key] = value
-    return out
-
-
-def differences(mine, cli):
-    """Keys whose values differ (reals to the 6 digits stats.json keeps); times and names aside."""
-    # PyMeshLab's dict drops text values (field.index_sum, params.param): numbers and flags only.
-    keys = [k for k in set(mine) | set(cli)
-            if not k.startswith(("time_s.", "input.")) and not isinstance(cli.get(k), str)]
-    bad = []
-    for k in sorted(keys):
-        a, b = mine.get(k), cli.get(k)
-        if k in ROUNDING_SENSITIVE:
-            same = a is not None and b is not None and abs(a - b) <= ROUNDING_SENSITIVE[k]
-        elif isinstance(a, float) or isinstance(b, float):
-            same = a is not None and b is not None and abs(a - b) <= 1e-5 * max(abs(a), abs(b), 1e-12)
-        else:
-            same = a == b
-        if not same:
-            bad.append("%s: pymeshlab %r, fcql %r" % (k, a, b))
-    return bad
-
-
 def cli_figures(folder):
     return flat(json.load(open(os.path.join(work, folder, "stats.json"))))
 
@@ -280,7 +243,8 @@ for mesh, folder, kwargs in [("eight.obj", "cli_eight", {"field_file": os.path.a
     s.load_new_mesh(mesh)
     d = s.compute_field_coherent_quad_layout(**kwargs)
     cli = cli_figures(folder)
-    bad = differences(dict(d), cli)
+    # PyMeshLab's dict drops text values (field.index_sum, params.param): numbers and flags only.
+    bad = differences(cli, dict(d), ("fcql run", "pymeshlab"), with_text=False)
     check(not bad, "%s: figures differ from fcql run: %s" % (mesh, "; ".join(bad)))
     print("%s: %d figures, all as fcql run gives them (layout.patches %s, quad.faces %s)"
           % (mesh, len(cli), d.get("layout.patches"), d.get("quad.faces")))

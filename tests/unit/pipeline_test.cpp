@@ -139,6 +139,9 @@ TEST(PipelineStages, RoundedBoxGivesOneConsistentRecord) {
   EXPECT_EQ(all.find("layout.t_junctions")->integer, 0);
   EXPECT_EQ(all.find("quad.base_complex_patches")->integer, 6);
   EXPECT_EQ(all.find("quad.irregular_vertices")->integer, 8);
+  ASSERT_NE(all.find("quad.irregular_by_valence.3"), nullptr);  // the box's corners: valence 3
+  EXPECT_EQ(all.find("quad.irregular_by_valence.3")->integer, 8);
+  EXPECT_EQ(all.find("quad.irregular_by_valence.5"), nullptr);
   EXPECT_EQ(all.find("quad.inverted_quads")->integer, 0);
   EXPECT_EQ(all.find("quad.faces")->integer, long(quad.quad.mesh.numQuads()));
   EXPECT_EQ(all.find("params.k")->integer, 10);
@@ -169,4 +172,26 @@ TEST(PipelineStages, TooManyQuadsFailBeforeAnyWorkNamingTheFinestValue) {
   EXPECT_GT(quadTargetEdge(mesh, p, ParameterNaming::CliOption), 0);
   p.targetFaces = 1000;
   EXPECT_NEAR(quadTargetEdge(mesh, p, ParameterNaming::CliOption), std::sqrt(4 * 3.14159 / 1000), 0.01);
+}
+
+// The misalignment threshold changes the quality figures only: at 45 degrees no quad can be
+// misaligned (a cross is never farther than that), at 0 every one that is not exactly aligned.
+TEST(PipelineStages, MisalignmentThresholdChangesOnlyTheFigures) {
+  const SurfaceMesh mesh = makeExample("rounded_box");
+  PipelineParameters p;
+  MeshInput input;
+  input.mesh = &mesh;
+  const FieldStageResult field = runFieldStage(input, p, FieldSource{}, StageObserver{});
+  const TraceStageResult trace = runTraceStage(mesh, field.field, field.analysis, p, StageObserver{});
+  const LayoutStageResult layout = runLayoutStage(mesh, field.field, field.analysis, trace, p, StageObserver{});
+  const QuadStageResult paper = runQuadStage(mesh, field.field, layout, p, StageObserver{});
+  p.misalignmentThresholdDeg = 45;
+  const QuadStageResult loose = runQuadStage(mesh, field.field, layout, p, StageObserver{});
+  p.misalignmentThresholdDeg = 0;
+  const QuadStageResult strict = runQuadStage(mesh, field.field, layout, p, StageObserver{});
+  EXPECT_EQ(loose.quad.mesh.positions, paper.quad.mesh.positions);
+  EXPECT_EQ(loose.quality.misalignedPercent, 0);
+  EXPECT_GT(strict.quality.misalignedPercent, 50);
+  EXPECT_LE(paper.quality.misalignedPercent, strict.quality.misalignedPercent);
+  EXPECT_EQ(loose.figures.find("params.misalignment_threshold")->real, 45);
 }

@@ -109,6 +109,7 @@ QuadMeshReport checkQuadMesh(const QuadMesh& mesh) {
   }
   r.borderLoops = countBorderLoops(borderNext);
   int used = 0;
+  std::map<std::string, int> irregular;
   for (int v = 0; v < nv; ++v) {
     if (uses[v] == 0) {
       ++r.unusedVertices;
@@ -116,9 +117,12 @@ QuadMeshReport checkQuadMesh(const QuadMesh& mesh) {
     }
     ++used;
     bool border = borderNext.count(v) > 0;
-    if (!border && valence[v] != 4) ++r.irregularVertices;
-    if (border && valence[v] != 3 && valence[v] != 2) ++r.irregularVertices;
+    if ((!border && valence[v] != 4) || (border && valence[v] != 3 && valence[v] != 2)) {
+      ++r.irregularVertices;
+      ++irregular[(border ? "border " : "") + std::to_string(valence[v])];
+    }
   }
+  r.irregularByValence.assign(irregular.begin(), irregular.end());
   r.eulerCharacteristic = used - int(edges) + mesh.numQuads();
   r.components = countComponents(nv, mesh.quads);
   r.genus = (2 * r.components - r.eulerCharacteristic - r.borderLoops) / 2;

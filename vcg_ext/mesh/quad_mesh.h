@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fcql {
@@ -32,6 +33,8 @@ struct QuadMeshReport {
   int components = 0;          ///< connected components (quads sharing vertices)
   int genus = 0;               ///< summed over components: (2·components − χ − borderLoops) / 2
   int irregularVertices = 0;   ///< interior valence ≠ 4, border valence ∉ {2 at corners, 3}
+  /// Those vertices by valence: "3", "5", ... inside, "border 4", ... on the border (sorted as text).
+  std::vector<std::pair<std::string, int>> irregularByValence;
   int unusedVertices = 0;
   std::string problem;
 };

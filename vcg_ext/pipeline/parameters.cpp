@@ -130,6 +130,11 @@ std::vector<S> makeTable() {
                    "patch parametrization",
                    "How each patch is mapped onto its grid of quads: field (each patch's grid follows the cross "
                    "field inside it) or mean-value (mean-value coordinates, the boundary by arc length)."));
+  t.push_back(real("misalignment_threshold", "misalignment-threshold", Q, &P::misalignmentThresholdDeg, 11.25, 0, 45,
+                   "degrees", "Misalignment threshold (degrees)", "misalignment threshold in degrees",
+                   "A quad counts as misaligned (quad.misaligned_pct, and per input face quad.misaligned_faces_pct) "
+                   "where one of its directions is more than this far from the cross field; 11.25 is pi/16, the "
+                   "paper's threshold. It changes only these figures, not the quads."));
   return t;
 }
 

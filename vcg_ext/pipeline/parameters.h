@@ -72,7 +72,7 @@ struct PipelineParameters {
   double ilpTimeLimit = 0;
   int ilpStall = 0, completionTrials = 0;
   // Quad
-  double scale = 0, maxDeviation = 0;
+  double scale = 0, maxDeviation = 0, misalignmentThresholdDeg = 0;
   int targetFaces = 0, smooth = 0;
   std::string param;
 

@@ -2,6 +2,7 @@
 
 #include "mesh/closest_point_index.h"
 #include "metrics/base_complex.h"
+#include "util/math_constants.h"
 
 #include <chrono>
 #include <cmath>
@@ -30,7 +31,8 @@ QuadrangulationOptions quadOptions(const SurfaceMesh& mesh, const CrossField& fi
   return options;
 }
 
-void describe(const QuadStageResult& s, const QuadrangulationOptions& options, int layoutPatches, StageLog& log) {
+void describe(const QuadStageResult& s, const QuadrangulationOptions& options, int layoutPatches,
+              double misalignmentThresholdDeg, StageLog& log) {
   const QuadrangulationResult& r = s.quad;
   const QuadMesh& q = r.mesh;
   for (const std::string& note : refinementNotes(r, options)) log.info(note);
@@ -65,9 +67,9 @@ void describe(const QuadStageResult& s, const QuadrangulationOptions& options, i
   const QuadQuality& m = s.quality;
   char line[300];
   std::snprintf(line, sizeof line,
-                "Quality: %.2f%% quads misaligned > pi/16 (mean %.2f deg; %.2f%% of the faces as the paper counts "
+                "Quality: %.2f%% quads misaligned > %g deg (mean %.2f deg; %.2f%% of the faces as the paper counts "
                 "them), scaled Jacobian min %.3f mean %.3f, Hausdorff %.3g%% of the diagonal (at most %.3g%%)",
-                m.misalignedPercent, m.meanMisalignmentDeg, m.misalignedFacesPercent, m.minScaledJacobian,
+                m.misalignedPercent, misalignmentThresholdDeg, m.meanMisalignmentDeg, m.misalignedFacesPercent, m.minScaledJacobian,
                 m.meanScaledJacobian, 100 * m.hausdorffRelative, 100 * m.hausdorffBoundRelative);
   log.info(line);
   if (m.invertedQuads > 0)
@@ -85,6 +87,7 @@ void record(const QuadStageResult& s, const PipelineParameters& p, Figures& f) {
   f.set("quad.faces", q.numQuads());
   f.set("quad.vertices", q.numVertices());
   f.set("quad.irregular_vertices", r.report.irregularVertices);
+  f.setCounts("quad.irregular_by_valence", r.report.irregularByValence);
   f.set("quad.base_complex_patches", s.baseComplexPatches);
   f.set("quad.genus", r.report.genus);
   f.set("quad.border_loops", r.report.borderLoops);
@@ -157,8 +160,9 @@ QuadStageResult runQuadStage(const SurfaceMesh& mesh, const CrossField& field, c
   log.progress(80, "quality of the quad mesh");
   const auto metricsStart = std::chrono::steady_clock::now();
   const ClosestPointIndex surfaceIndex(mesh);
-  s.quality = measureQuadQuality(s.quad.mesh, mesh, field, surfaceIndex, p.maxDeviation * mesh.boundingBoxDiagonal());
-  describe(s, options, layout.patches.numPatches(), log);
+  s.quality = measureQuadQuality(s.quad.mesh, mesh, field, surfaceIndex, p.maxDeviation * mesh.boundingBoxDiagonal(),
+                                 p.misalignmentThresholdDeg * kPi / 180);
+  describe(s, options, layout.patches.numPatches(), p.misalignmentThresholdDeg, log);
   record(s, p, s.figures);
   s.figures.set("time_s.metrics", secondsSince(metricsStart));
   log.progress(90, "quad mesh measured");
