@@ -37,8 +37,8 @@ std::string usage() {
              "        names; --mlx field,trace,...: the <Param> lines of a MeshLab script for those stages\n"
              "\n"
              "field options:\n") +
-         fcql::parametersUsage(PipelineStage::Field) + "trace options:\n" + fcql::parametersUsage(PipelineStage::Trace) +
-         "layout options:\n" + fcql::parametersUsage(PipelineStage::Layout) + "quad options (run):\n" +
+         fcql::parametersUsage(PipelineStage::Field) + "\ntrace options:\n" + fcql::parametersUsage(PipelineStage::Trace) +
+         "\nlayout options:\n" + fcql::parametersUsage(PipelineStage::Layout) + "\nquad options (run):\n" +
          fcql::parametersUsage(PipelineStage::Quad) +
          "\n"
          "MESH is a triangle mesh in OBJ, PLY or OFF. Examples the tool generates itself:\n"
