@@ -146,9 +146,17 @@ QuadrangulationResult solveCounts(const PatchLayout& layout, const Quadrangulati
   // target) can itself contradict the equalities at t-junctions, and no split then helps:
   // the counts disagree again on the parts and the splits spread. When the rounds run out,
   // the counts are solved once more without that bound before giving up.
-  auto solveLengths = [&](const PatchGraph& graph) {
-    SideLengths lengths = solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped);
+  // Warm rounds: once a solve leaves a part at its node budget (a large program, solved again
+  // whole in every round: the dragon's part of ~900 classes took 1.5–4 s a round), the later
+  // rounds solve only the classes around the patches the splits changed (solveSideLengths'
+  // `previous`) and keep the rest. Where every part is solved to optimality, the rounds
+  // solve the whole program, as that costs little.
+  bool warm = false;
+  auto solveLengths = [&](const PatchGraph& graph, const std::vector<int>* previous = nullptr) {
+    SideLengths lengths = solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped,
+                                           warm ? previous : nullptr);
     r.timeLimitedParts += lengths.timeLimitedParts;
+    warm = warm || lengths.budgetLimitedParts > 0;
     return lengths;
   };
   r.graph = buildPatchGraph(layout);
@@ -185,7 +193,7 @@ QuadrangulationResult solveCounts(const PatchLayout& layout, const Quadrangulati
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
-    r.lengths = solveLengths(r.graph);
+    r.lengths = solveLengths(r.graph, &r.lengths.segments);
   }
   return r;
 }
