@@ -471,6 +471,25 @@ TEST(Quadrangulation, NeighboursSplitInOneRoundShareTheMiddleOfTheirSide) {
   EXPECT_TRUE(lengths.inconsistentPatches.empty());
 }
 
+TEST(Quadrangulation, WarmRoundsSolveAgainAroundTheSplitsOnly) {
+  // A warm round (the last counts given) after a split: the counts agree on every patch, as a
+  // whole solve's do. Given counts of the same graph (nothing split since), every class keeps
+  // its count.
+  auto q = layoutOf(makeRoundedBox());
+  PatchGraph graph = buildPatchGraph(q->patches);
+  const double target = 0.05 * q->mesh.boundingBoxDiagonal();
+  const SideLengths before = solveSideLengths(graph, target, 10);
+  ASSERT_TRUE(before.inconsistentPatches.empty());
+  const SideLengths same = solveSideLengths(graph, target, 10, true, &before.segments);
+  EXPECT_EQ(same.segments, before.segments);
+  EXPECT_EQ(same.programs, 0);
+  splitPatches(graph, q->patches, {0});
+  const SideLengths warm = solveSideLengths(graph, target, 10, true, &before.segments);
+  EXPECT_TRUE(warm.inconsistentPatches.empty());
+  ASSERT_EQ(warm.segments.size(), graph.segments.size());
+  for (int n : warm.segments) EXPECT_GE(n, 1);
+}
+
 TEST(Quadrangulation, SharedMeshesGiveCloseManifoldQuadMeshes) {
   FCQL_REQUIRE_SHARED_WITH_FIELD(mesh, field, "eight");
   auto q = layoutOf(mesh, &field);

@@ -93,6 +93,9 @@ double coverRadius(const Vec3& a, const Vec3& b, const Vec3& c) {
   return r;
 }
 
+/// How many times the limit a distance found must be for measureOneWay to cut coarser.
+constexpr double kFarBeyond = 4;
+
 /// One way of the two-sided distance: the triangles `triangles` over `positions` against
 /// `other`. Each triangle's vertices are measured (once per vertex), then the triangle is cut
 /// into four at its edges' midpoints, recursively, wherever its bound (largest distance at its
@@ -125,7 +128,14 @@ void measureOneWay(const std::vector<Vec3>& positions, const std::vector<std::ar
       const double worst = std::max({piece.dist[0], piece.dist[1], piece.dist[2]});
       const double radius = coverRadius(piece.p[0], piece.p[1], piece.p[2]);
       const double bound = worst + radius;
-      if (bound <= std::max(limit, d.distance) || radius <= resolution) {
+      // Once the largest distance found is kFarBeyond times the limit, the bound is sought to
+      // within 2% of that distance only: such a pass fails whatever the precision, and a
+      // refinement then halves the target edge (quadrangulate's step is clamped at 0.5 from
+      // 3.24 times the limit on). A tiny limit had every pass cut to the resolution over most
+      // of the surface (the e2e unmet-bound case: millions of samples a measurement).
+      const double finest =
+          limit > 0 && d.distance > kFarBeyond * limit ? std::max(resolution, 0.02 * d.distance) : resolution;
+      if (bound <= std::max(limit, d.distance) || radius <= finest) {
         d.bound = std::max(d.bound, bound);
         if (limit > 0 && bound > limit && worst <= limit) {
           // Undecided at the finest resolution: counts as too far, where its worst point is.

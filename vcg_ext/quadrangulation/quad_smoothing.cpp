@@ -477,6 +477,30 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   return report;
 }
 
+namespace {
+
+/// The distance from p (in cell c of `cells`, a grid of cell `radius` over the points `far`)
+/// to the nearest far point, looked for in the 27 cells around c, or any distance up to
+/// radius / 2 (all the same to the caller, which returns such a vertex fully), so that the
+/// search ends at the first such point: a pass far from the bound has millions of far points.
+double nearestFarPoint(const std::map<std::array<long long, 3>, std::vector<int>>& cells, const std::vector<Vec3>& far,
+                       const Vec3& p, const std::array<long long, 3>& c, double radius) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (long long dx : {0, -1, 1})
+    for (long long dy : {0, -1, 1})
+      for (long long dz : {0, -1, 1}) {
+        auto it = cells.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
+        if (it == cells.end()) continue;
+        for (int i : it->second) {
+          nearest = std::min(nearest, (far[i] - p).norm());
+          if (nearest <= radius / 2) return nearest;
+        }
+      }
+  return nearest;
+}
+
+}  // namespace
+
 int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, const std::vector<Vec3>& far,
                             double radius) {
   const int nv = quads.numVertices();
@@ -498,15 +522,7 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   for (int v = 0; v < nv; ++v) {
     if (jacobian.quadsAround(v).empty() || quads.positions[v] == sampled[v]) continue;
     const Vec3 smoothed = quads.positions[v];
-    const auto c = cellOf(smoothed);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          auto it = cells.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
-          if (it == cells.end()) continue;
-          for (int i : it->second) nearest = std::min(nearest, (far[i] - smoothed).norm());
-        }
+    const double nearest = nearestFarPoint(cells, far, smoothed, cellOf(smoothed), radius);
     if (!(nearest < radius)) continue;
     const double share = std::min(1.0, 2.0 * (1.0 - nearest / radius));
     jacobian.dependents(v, around);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -136,18 +137,26 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
   return attempt(0) || attempt(1) || attempt(2);
 }
 
-/// One pass of the stage at one target edge length; `surface` is the topology of the layout's
-/// triangles, which the quad mesh must have.
-QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options,
-                                        const SurfaceTopology& surface) {
+/// The patch graph and its integer side lengths at one target edge length, after the
+/// zero-chain splits: what a pass samples. They do not depend on the field (only the maps
+/// and the smoothing do), so the passes with and without it at one size share them.
+QuadrangulationResult solveCounts(const PatchLayout& layout, const QuadrangulationOptions& options) {
   QuadrangulationResult r;
   // The lower bound on the counts (no segment sampled more than 1.5 times coarser than the
   // target) can itself contradict the equalities at t-junctions, and no split then helps:
   // the counts disagree again on the parts and the splits spread. When the rounds run out,
   // the counts are solved once more without that bound before giving up.
-  auto solveLengths = [&](const PatchGraph& graph) {
-    SideLengths lengths = solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped);
+  // Warm rounds: once a solve leaves a part at its node budget (a large program, solved again
+  // whole in every round: the dragon's part of ~900 classes took 1.5–4 s a round), the later
+  // rounds solve only the classes around the patches the splits changed (solveSideLengths'
+  // `previous`) and keep the rest. Where every part is solved to optimality, the rounds
+  // solve the whole program, as that costs little.
+  bool warm = false;
+  auto solveLengths = [&](const PatchGraph& graph, const std::vector<int>* previous = nullptr) {
+    SideLengths lengths = solveSideLengths(graph, options.targetEdgeLength, options.ilpTimeLimit, !r.stretchBoundDropped,
+                                           warm ? previous : nullptr);
     r.timeLimitedParts += lengths.timeLimitedParts;
+    warm = warm || lengths.budgetLimitedParts > 0;
     return lengths;
   };
   r.graph = buildPatchGraph(layout);
@@ -184,8 +193,40 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     r.splitPatches += int(r.lengths.inconsistentPatches.size());
     splitPatches(r.graph, layout, r.lengths.inconsistentPatches);
     ++r.splitRounds;
-    r.lengths = solveLengths(r.graph);
+    r.lengths = solveLengths(r.graph, &r.lengths.segments);
   }
+  return r;
+}
+
+/// Per target edge length, the counts of a pass (or the error they failed with),
+/// kept for the other passes of the stage at the same size; and the measured passes at the
+/// asked size, with and without the field.
+struct PassCache {
+  std::map<double, QuadrangulationResult> counts;
+  std::map<double, std::string> failures;
+  std::map<std::pair<double, bool>, QuadrangulationResult> measured;
+
+  QuadrangulationResult get(const PatchLayout& layout, const QuadrangulationOptions& options) {
+    const double size = options.targetEdgeLength;
+    if (auto f = failures.find(size); f != failures.end()) throw std::runtime_error(f->second);
+    auto it = counts.find(size);
+    if (it == counts.end()) {
+      try {
+        it = counts.emplace(size, solveCounts(layout, options)).first;
+      } catch (const std::runtime_error& e) {
+        failures.emplace(size, e.what());
+        throw;
+      }
+    }
+    return it->second;
+  }
+};
+
+/// One pass of the stage at one target edge length; `surface` is the topology of the layout's
+/// triangles, which the quad mesh must have.
+QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const QuadrangulationOptions& options,
+                                        const SurfaceTopology& surface, PassCache& cache) {
+  QuadrangulationResult r = cache.get(layout, options);
   r.mesh = samplePatches(layout, r.graph, r.lengths, options.fieldDirections.empty() ? nullptr : &options.fieldDirections);
   r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
   r.sampledPositions = r.mesh.positions;
@@ -207,9 +248,9 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
   return r;
 }
 
-}  // namespace
-
-QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options) {
+/// The stage, with the counts of each size computed once for all its passes.
+QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const QuadrangulationOptions& options,
+                                        PassCache& cache) {
   if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
   if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
   if (!(options.ilpTimeLimit >= 1)) throw std::invalid_argument("the side-length time limit must be at least 1 s");
@@ -217,8 +258,8 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     throw std::invalid_argument("the maximum deviation must be a finite number >= 0");
   if (options.maxRefinements < 0) throw std::invalid_argument("the number of refinements must be >= 0");
   const SurfaceTopology topology = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
-  QuadrangulationResult r = quadrangulateOnce(layout, options, topology);
   if (options.maxDeviation <= 0) {
+    QuadrangulationResult r = quadrangulateOnce(layout, options, topology, cache);
     reduceFolds(r, layout, options, [](QuadrangulationResult&) { return true; });
     return r;
   }
@@ -233,7 +274,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   bool any = false;
   for (std::size_t v = 0; v < used.size(); ++v)
     if (used[v]) lo = lo.cwiseMin(layout.positions[v]), hi = hi.cwiseMax(layout.positions[v]), any = true;
-  if (!any || r.mesh.numQuads() == 0) return r;  // nothing to measure
+  if (!any) return quadrangulateOnce(layout, options, topology, cache);  // nothing to measure
   const double limit = options.maxDeviation * (hi - lo).norm();
   // Triangles are cut down to 2% of the limit, but no finer than 2e-4 of the diagonal (a
   // tiny limit would cut without end; what stays undecided then counts as too far).
@@ -262,7 +303,18 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       d = std::move(after);
     }
   };
-  measure(r);
+  // A pass at the asked size, measured (and restored): cached, as the stage without the field
+  // makes it both as the alternative below and as the first pass of its own stage.
+  auto measuredPass = [&](const QuadrangulationOptions& o) {
+    const std::pair<double, bool> key{o.targetEdgeLength, o.fieldDirections.empty()};
+    if (auto it = cache.measured.find(key); it != cache.measured.end()) return it->second;
+    QuadrangulationResult q = quadrangulateOnce(layout, o, topology, cache);
+    if (q.mesh.numQuads() > 0) measure(q);
+    cache.measured.emplace(key, q);
+    return q;
+  };
+  QuadrangulationResult r = measuredPass(options);
+  if (r.mesh.numQuads() == 0) return r;  // nothing to measure
   // Where the field-aligned maps miss the bound at the asked size (patches stretched along the
   // field where the surface curves across them), the stage without the field, whose grids
   // follow the patches' outlines, is tried at the same size before any refinement, and kept
@@ -272,8 +324,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     QuadrangulationOptions plain = options;
     plain.fieldDirections.clear();
     try {
-      QuadrangulationResult without = quadrangulateOnce(layout, plain, topology);
-      measure(without);
+      QuadrangulationResult without = measuredPass(plain);
       if (without.deviationBound <= limit) {
         r = std::move(without);
         r.boundWithoutField = true;
@@ -294,7 +345,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
     finer.targetEdgeLength *= step;
     const int refinements = r.refinements + 1;
     try {
-      QuadrangulationResult next = quadrangulateOnce(layout, finer, topology);
+      QuadrangulationResult next = quadrangulateOnce(layout, finer, topology, cache);
       next.refinements = refinements;
       measure(next);
       if (!(next.deviationBound < r.deviationBound)) {
@@ -323,7 +374,7 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
       QuadrangulationOptions plain = active;
       plain.fieldDirections.clear();
       try {
-        withoutField = quadrangulate(layout, plain);
+        withoutField = quadrangulateWith(layout, plain, cache);
       } catch (const std::runtime_error&) {
         // The stage without the field fails where this one did not: keep this one.
       }
@@ -371,6 +422,13 @@ QuadrangulationResult quadrangulate(const PatchLayout& layout, const Quadrangula
   }
   r.deviationLimit = limit;
   return r;
+}
+
+}  // namespace
+
+QuadrangulationResult quadrangulate(const PatchLayout& layout, const QuadrangulationOptions& options) {
+  PassCache cache;
+  return quadrangulateWith(layout, options, cache);
 }
 
 std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const QuadrangulationOptions& options) {

@@ -35,6 +35,11 @@ constexpr int kSmallProgramVariables = 1000;
 constexpr long kSmallProgramNodes = 50000;
 constexpr long kLargeProgramNodes = 1500;
 constexpr double kMaxStretch = 1.5;
+/// Warm rounds solve the classes of the patches a split changed and of the equalities up to
+/// this many steps from them (see keptCounts). On the dragon: 1 ring let the mismatches spread
+/// (87 → 17 → 21 → 11 → 23 ... patches split a round, never settling), 3 settle in four rounds
+/// (87 → 9 → 6 → 3 → 0) as the whole program did (104 patches split in four rounds).
+constexpr int kWarmRings = 3;
 
 /// Whether the opposite sides k and k + 2 of ps are one segment each (a hard equality that
 /// the classes below make implicit).
@@ -70,10 +75,12 @@ std::vector<std::pair<double, double>> roundingCostPieces(std::vector<double> id
 }
 
 /// An equality between the opposite sides of a patch that do not reduce to one class each:
-/// Σ (coefficient · class count) = 0, exactly if `forced`, else in the L1 sense.
+/// Σ (coefficient · class count) + constant = 0, exactly if `forced`, else in the L1 sense.
+/// The constant gathers the classes kept at their last counts (warm rounds).
 struct SideEquality {
   std::vector<std::pair<int, double>> terms;  ///< (class, coefficient)
   bool forced;
+  double constant = 0;
 };
 
 struct Component {
@@ -106,8 +113,9 @@ IntegerProgram componentProgram(const Component& c, const std::vector<SideEquali
   for (int e : c.equalities) {
     std::vector<std::pair<int, double>> diff;
     for (const auto& term : equalities[e].terms) diff.push_back({variableOf.at(term.first), term.second});
+    const double constant = equalities[e].constant;
     if (honourForced && equalities[e].forced) {
-      ip.addConstraint(diff, IntegerProgram::Sense::Equal, 0);
+      ip.addConstraint(diff, IntegerProgram::Sense::Equal, -constant);
       continue;
     }
     // d ≥ |Σa − Σb|
@@ -116,8 +124,8 @@ IntegerProgram componentProgram(const Component& c, const std::vector<SideEquali
     plus.push_back({d, 1.0});
     for (auto& term : minus) term.second = -term.second;
     minus.push_back({d, 1.0});
-    ip.addConstraint(plus, IntegerProgram::Sense::GreaterEqual, 0);
-    ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, 0);
+    ip.addConstraint(plus, IntegerProgram::Sense::GreaterEqual, -constant);
+    ip.addConstraint(minus, IntegerProgram::Sense::GreaterEqual, constant);
   }
   // A 1% gap cannot hide a mismatch (each costs softWeight, more than 1% of any objective
   // made of rounding terms alone) and spares branch and bound most of its work.
@@ -127,7 +135,56 @@ IntegerProgram componentProgram(const Component& c, const std::vector<SideEquali
 
 int statusRank(IntegerProgram::Status s) { return s == IntegerProgram::Status::Optimal ? 0 : 1; }
 
-SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds, bool boundStretch) {
+/// One ring more of classes solved again: a class solved again changes the opposite-side
+/// equalities it is in, whose other classes are solved again too, so that they can make up for it.
+void growSolved(const PatchGraph& graph, const std::vector<int>& classOf, std::vector<char>& solved) {
+  const std::vector<char> before = solved;
+  for (const PatchSides& ps : graph.patches)
+    for (int k = 0; k < 2 && ps.active; ++k) {
+      bool any = false;
+      for (int j : {k, k + 2})
+        for (const auto& ss : ps.sides[j]) any = any || before[classOf[ss.segment]];
+      if (!any) continue;
+      for (int j : {k, k + 2})
+        for (const auto& ss : ps.sides[j]) solved[classOf[ss.segment]] = 1;
+    }
+}
+
+/// Warm rounds: the count each class keeps from `previous` (the last round's counts, indexed
+/// by the segments that existed then), or −1 for a class solved again. Solved again: the
+/// classes of every segment of a patch that has a segment added since (the parts of the
+/// split patches and their neighbours, whose sides were halved), so that the counts across
+/// such a patch may change, and those kWarmRings equalities away (growSolved). A class of old
+/// segments keeps one count: classes only split when patches are split (chords break at new
+/// t-junctions, new links join new segments).
+std::vector<int> keptCounts(const PatchGraph& graph, const std::vector<int>& classOf, const std::vector<int>& previous) {
+  const int ns = int(graph.segments.size()), old = int(previous.size());
+  std::vector<int> kept(ns, -1);
+  std::vector<char> solved(ns, 0);  // classes solved again
+  for (int s = 0; s < ns; ++s) {
+    const int c = classOf[s];
+    // (Old segments of one class that had different counts cannot happen, as said above;
+    // such a class would be solved again.)
+    if (s >= old || previous[s] < 1 || (kept[c] >= 0 && kept[c] != previous[s])) solved[c] = 1;
+    else kept[c] = previous[s];
+  }
+  for (const PatchSides& ps : graph.patches) {
+    if (!ps.active) continue;
+    bool touched = false;
+    for (const auto& side : ps.sides)
+      for (const auto& ss : side) touched = touched || ss.segment >= old;
+    if (!touched) continue;
+    for (const auto& side : ps.sides)
+      for (const auto& ss : side) solved[classOf[ss.segment]] = 1;
+  }
+  for (int ring = 0; ring < kWarmRings; ++ring) growSolved(graph, classOf, solved);
+  for (int c = 0; c < ns; ++c)
+    if (solved[c]) kept[c] = -1;
+  return kept;
+}
+
+SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds, bool boundStretch,
+                  const std::vector<int>* previous) {
   const auto start = std::chrono::steady_clock::now();
   const int ns = int(graph.segments.size());
   // Segments that must be equal because they are the single-segment opposite sides of a
@@ -152,7 +209,11 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     lowerOf[c] = boundStretch ? std::max(1.0, std::floor(classMaxIdeal[c] / kMaxStretch)) : 1.0;
     upperOf[c] = 4 * std::ceil(classMaxIdeal[c]) + 4;
   }
-  // The other opposite-side pairs (sides made of several segments, at t-junctions).
+  std::vector<int> kept(ns, -1);
+  if (previous) kept = keptCounts(graph, classOf, *previous);
+  // The other opposite-side pairs (sides made of several segments, at t-junctions); the
+  // classes that keep their counts move into the constant, and an equality of those alone
+  // drops out (it held in the last round, or its patch would have been split).
   std::vector<SideEquality> equalities;
   for (const PatchSides& ps : graph.patches)
     for (int k = 0; k < 2 && ps.active; ++k) {
@@ -162,7 +223,8 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
       for (const auto& s : ps.sides[k + 2]) sum[classOf[s.segment]] -= 1.0;
       SideEquality eq{{}, ps.forceEqual};
       for (const auto& term : sum)
-        if (term.second != 0) eq.terms.push_back(term);
+        if (term.second != 0 && kept[term.first] >= 0) eq.constant += term.second * kept[term.first];
+        else if (term.second != 0) eq.terms.push_back(term);
       if (!eq.terms.empty()) equalities.push_back(std::move(eq));
     }
   // The program splits exactly into independent components: classes linked by equalities.
@@ -174,12 +236,14 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
     for (std::size_t i = 1; i < eq.terms.size(); ++i) link.unite(eq.terms[i].first, eq.terms[0].first);
   std::map<int, Component> components;
   for (int s = 0; s < ns; ++s)
-    if (classOf[s] == s) components[link.find(s)].classes.push_back(s);
+    if (classOf[s] == s && kept[s] < 0) components[link.find(s)].classes.push_back(s);
   for (int e = 0; e < int(equalities.size()); ++e)
     components[link.find(equalities[e].terms[0].first)].equalities.push_back(e);
 
   SideLengths out;
   std::vector<int> count(ns, 0);
+  for (int c = 0; c < ns; ++c)
+    if (kept[c] >= 0) count[c] = kept[c];
   const double softWeight = 10.0 * kUnderWeight * (1 + ns);  // any mismatch costs more than all rounding
   int programs = 0;
   for (const auto& entry : components) {
@@ -222,6 +286,7 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
       r = attempt(componentProgram(c, equalities, idealsOf, lowerOf, upperOf, softWeight, false, variableOf));
     }
     if (rounded) ++out.roundedParts;
+    if (r.status == IntegerProgram::Status::WorkLimit) ++out.budgetLimitedParts;
     if (!r.hasSolution()) throw std::runtime_error("side lengths: " + r.message);
     if (statusRank(r.status) > statusRank(out.status)) out.status = r.status, out.message = r.message;
     for (int cls : c.classes) count[cls] = int(std::lround(r.values[variableOf.at(cls)]));
@@ -251,9 +316,9 @@ SideLengths solve(const PatchGraph& graph, double targetEdgeLength, double timeL
 }  // namespace
 
 SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds,
-                             bool boundStretch) {
+                             bool boundStretch, const std::vector<int>* previous) {
   if (!(targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
-  return solve(graph, targetEdgeLength, timeLimitSeconds, boundStretch);
+  return solve(graph, targetEdgeLength, timeLimitSeconds, boundStretch, previous);
 }
 
 }  // namespace fcql

@@ -26,6 +26,7 @@ struct SideLengths {
   int programs = 0;  ///< parts that needed lp_solve (the others are single classes)
   int roundedParts = 0;  ///< of those, parts solved by rounding the LP relaxation
   int timeLimitedParts = 0;  ///< parts the safety time limit cut short (the quads then depend on the machine)
+  int budgetLimitedParts = 0;  ///< parts branch and bound left at its node budget (not proven optimal)
 
   /// Subdivisions along side k of patch p.
   int sideLength(const PatchGraph& g, int p, int k) const;
@@ -39,7 +40,10 @@ struct SideLengths {
 /// infeasible it is solved again without them. With `boundStretch`, no segment is sampled
 /// more than 1.5 times coarser than the target (a lower bound on each count); without it
 /// only counts of at least 1 are asked for, which the zero-chain splits can always satisfy.
+/// With `previous` (a warm round after zero-chain splits: the last counts, per segment that
+/// existed then), only the classes on patches that gained segments are solved again; the
+/// others keep their counts, which enter those patches' equalities as constants.
 SideLengths solveSideLengths(const PatchGraph& graph, double targetEdgeLength, double timeLimitSeconds,
-                             bool boundStretch = true);
+                             bool boundStretch = true, const std::vector<int>* previous = nullptr);
 
 }  // namespace fcql
