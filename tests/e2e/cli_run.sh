@@ -10,7 +10,7 @@ trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # quad_value FILE KEY: the value of "KEY" inside the "quad" section of a stats.json.
-quad_value() { sed -n '/"quad": {/,/}/p' "$1" | grep -o "\"$2\": *[-0-9.e+a-z]*" | head -1 | sed 's/.*: *//'; }
+quad_value() { sed -n '/^  "quad": {/,/^  }/p' "$1" | grep -o "\"$2\": *[-0-9.e+a-z]*" | head -1 | sed 's/.*: *//'; }
 
 # check_quads DIR: quad.obj holds only v and 4-index f lines, indices in range, as many faces
 # as stats.json says.

@@ -18,7 +18,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-quad_value() { sed -n '/"quad": {/,/}/p' "$1" | grep -o "\"$2\": *[-0-9.e+a-z]*" | head -1 | sed 's/.*: *//'; }
+quad_value() { sed -n '/^  "quad": {/,/^  }/p' "$1" | grep -o "\"$2\": *[-0-9.e+a-z]*" | head -1 | sed 's/.*: *//'; }
 
 # Folded quads still left (issue 21): MESH@SCALE=COUNT. Everything else must have none. The
 # dragon's count varies from run to run (39-81 at 0.02: its side-length parts stop at their
