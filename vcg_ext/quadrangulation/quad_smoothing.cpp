@@ -1,5 +1,7 @@
 #include "quadrangulation/quad_smoothing.h"
 
+#include "quadrangulation/fold_repair.h"
+
 #include "mesh/closest_point_index.h"
 #include "metrics/quad_quality.h"
 #include "util/math_constants.h"
@@ -354,6 +356,11 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   std::unique_ptr<ClosestPointIndex> features;
   if (!featureSegments.empty()) features = std::make_unique<ClosestPointIndex>(surfacePositions, featureSegments);
 
+  // How repairFolds may move each vertex: inner ones on the surface, feature vertices along
+  // their lines (not where lines meet), border vertices not at all.
+  std::vector<char> repairMoves(nv, kOnSurface);
+  for (int v = 0; v < nv; ++v)
+    if (fixed[v] || neighbours[v].empty()) repairMoves[v] = kStays;
   // Feature vertices: on (within a tiny tolerance of) a sharp edge; they stay.
   const double tolerance = 1e-7 * std::sqrt(longestEdge2) + 1e-12;
   for (int v = 0; v < nv && features; ++v) {
@@ -365,8 +372,12 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     // On a feature line; at one of its ends or corners (not two sharp edges at that surface
     // vertex) it stays put for good.
     fixed[v] = slidable[cp.triangle] ? kOnFeature : kFixed;
-    for (int end : {e[0], e[1]})
-      if (sharpDegree[end] != 2 && (surfacePositions[end] - cp.point).norm() <= near) fixed[v] = kFixed;
+    repairMoves[v] = kAlongFeature;
+    for (int end : {e[0], e[1]}) {
+      if (sharpDegree[end] == 2 || (surfacePositions[end] - cp.point).norm() > near) continue;
+      fixed[v] = kFixed;
+      if (sharpDegree[end] > 2) repairMoves[v] = kStays;  // where lines meet; at a line's loose end it may slide
+    }
   }
   for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
 
@@ -474,6 +485,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   }
   quads.positions = std::move(kept);
   report = keptReport;
+  report.repairedFolds = repairFolds(quads, index, features.get(), normals, repairMoves, jacobian);
   return report;
 }
 

@@ -25,8 +25,9 @@
 // only when fewer quads are folded and none newly. The untangling runs twice from the smoothed
 // positions, the second time with each vertex's nearest point on a feature line among its
 // candidates (a grid line beside a crease may unfold only on it), and the run leaving fewer
-// folded quads is kept. What cannot be unfolded stays (counted by
-// the caller: quad.inverted_quads).
+// folded quads is kept. Folds still left go to repairFolds (fold_repair.h), which moves the
+// vertices around them together (feature vertices along their line, border vertices not at
+// all). What cannot be unfolded stays (counted by the caller: quad.inverted_quads).
 #pragma once
 
 #include "mesh/quad_mesh.h"
@@ -52,6 +53,7 @@ struct SmoothingReport {
   int revertedMoves = 0;      ///< vertex moves undone because they folded a quad
   int snappedMoves = 0;       ///< vertex moves that ended on a feature line
   int untangledMoves = 0;     ///< vertex moves of the untangling pass
+  int repairedFolds = 0;      ///< quads unfolded by repairFolds (fold_repair.h) after the untangling
 };
 
 /// `surfacePositions` / `surfaceTriangles`: the surface the quads sample (e.g. the layout's
