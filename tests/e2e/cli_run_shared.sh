@@ -21,14 +21,15 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 quad_value() { sed -n '/^  "quad": {/,/^  }/p' "$1" | grep -o "\"$2\": *[-0-9.e+a-z]*" | head -1 | sed 's/.*: *//'; }
 
 # Folded quads still left (issue 21): MESH@SCALE=COUNT. Everything else must have none. The
-# dragon's count varies from run to run (39-81 at 0.02: its side-length parts stop at their
-# time limits), hence its margin. Fandisk's came with the conforming layout (issue 20): at a
-# corner where three creases meet, a thin patch beside a separatrix the completion re-routed
-# is sampled as one row of quads twisted across the corner (its two long sides cross); the
-# field-aligned maps and the untangling that slides vertices along creases leave 0 at 0.02.
-# Deckel's are in one patch whose map folds (outside_points). Camelhead, joint and rockerarm
-# have none since the conforming layouts and the field-aligned maps.
-known_folds="dragon@0.02=90 deckel@0.01=7 dragon@0.01=110 fandisk@0.01=1"
+# dragon's count varies from run to run (its side-length parts stop at their time limits; 39-81
+# at 0.02 before the fold repair, 26-28 at either size after it), hence its margin; most of its
+# folds left touch a vertex that may not move (where feature lines of the scan meet) or lie in
+# tiny quads of a collapsed patch. Fandisk's one at 0.01 (a thin patch sampled as a row of quads
+# twisted across a corner where three creases meet) is undone by the fold repair
+# (fold_repair.h). Deckel's are in one patch whose map folds (outside_points): quads of 0.1 to
+# 1.5 edge lengths across a crease, which moving vertices does not undo. Camelhead, joint and
+# rockerarm have none since the conforming layouts and the field-aligned maps.
+known_folds="dragon@0.02=45 deckel@0.01=7 dragon@0.01=45"
 
 # Runs that may fail in the zero-chain rounds (their side-length parts stop at time limits, so
 # the counts differ from run to run; it happened before this test's changes as well):
