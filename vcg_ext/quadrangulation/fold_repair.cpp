@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kTarget = 0.2;   ///< ε: corners below it pay (ε − J)²
 constexpr double kFloor = 0.02;   ///< a quad that was not folded may not fall below this (or its figure)
-constexpr int kIterations = 300;  ///< descent steps per part
+constexpr int kIterations = 100;  ///< descent steps per part
 
 /// A connected part of the region: its vertices and the quads around them, sorted.
 struct Part {
