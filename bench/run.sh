@@ -342,6 +342,21 @@ bound there and the stage runs again without the field (mean-value maps), which 
 
 ## Quad quality: folds and the distance bound (issue 21, parts 2 and 3; 2026-12-03)
 
+Fold repair (ninth session): where quads are still folded after the untangling, the movable
+vertices within 1, 2, 4, then 8 rings of them move together (`quadrangulation/fold_repair.h`):
+each corner is penalised by max(0, 0.2 − J)² and by the same hinge on its area relative to the
+quad's starting size, descending in the tangent plane and projecting back on the surface, first
+against the surface's normals, then against the quads' own; feature vertices slide along their
+line, vertices where lines meet and border vertices stay. A region's result is kept only if
+fewer quads around it are folded and none that was unfolded drops below 0.02. Folded quads:
+fandisk at half the size 1 → 0 (a strip of tiny quads pressed against a corner of three
+creases), the dragon 37 → 29 (most of those left have a corner fixed where the scan's feature
+lines meet), deckel at half the size 7 → 7 (one patch whose map folds across a crease: moving
+vertices cannot undo it, the patch would have to be sampled again). The other meshes' quads
+are byte-identical, except camelhead's (no folds before or after; the repair acted in an
+intermediate refinement pass): 24320 → 27014 quads, misaligned 25.3% → 24.3%, Hausdorff
+0.76% → 0.96%. The dragon's quad stage costs about 4 s more (13 → 17 s run alone).
+
 What changed (branch quad-quality): the scaled Jacobian of a quad now also measures each of its
 four corners against the surface normal there (the mean unit normal of the quads around the
 vertex): a quad turned over against its neighbours, whose corners all agree with its own
