@@ -7,24 +7,16 @@
 
 namespace fcql {
 
+namespace {
+
+/// "-1/4: 16, 1/4: 8" or "none".
 std::string formatIndexHistogram(const FieldAnalysis& analysis) {
   std::string out;
   for (const auto& h : analysis.interiorHistogram()) out += (out.empty() ? "" : ", ") + h.first + ": " + std::to_string(h.second);
   return out.empty() ? std::string("none") : out;
 }
 
-void recordParameters(Figures& figures, const PipelineParameters& parameters, PipelineStage stage) {
-  for (const ParameterSpec& s : parameterTable()) {
-    if (s.stage != stage || s.kind == ParameterSpec::File || !s.inCli()) continue;  // use_existing: an input choice
-    const std::string key = std::string("params.") + (s.inFilters() ? s.name : s.option);
-    switch (s.kind) {
-      case ParameterSpec::Real: figures.set(key, parameters.*s.real); break;
-      case ParameterSpec::Integer: figures.set(key, parameters.*s.integer); break;
-      case ParameterSpec::Flag: figures.set(key, parameters.*s.flag); break;
-      default: figures.set(key, parameters.valueText(s)); break;
-    }
-  }
-}
+}  // namespace
 
 FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters& p, const FieldSource& source,
                                const StageObserver& observer) {

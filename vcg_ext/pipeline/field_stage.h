@@ -50,10 +50,5 @@ struct FieldStageResult {
 FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters& parameters, const FieldSource& source,
                                const StageObserver& observer);
 
-/// "-1/4: 16, 1/4: 8" or "none".
-std::string formatIndexHistogram(const FieldAnalysis& analysis);
-
-/// Records params.NAME for the parameters of `stage` in the table (files left out).
-void recordParameters(Figures& figures, const PipelineParameters& parameters, PipelineStage stage);
 
 }  // namespace fcql

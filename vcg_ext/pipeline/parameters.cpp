@@ -277,6 +277,19 @@ std::string PipelineParameters::valueText(const ParameterSpec& s) const {
   return "";
 }
 
+void recordParameters(Figures& figures, const PipelineParameters& parameters, PipelineStage stage) {
+  for (const ParameterSpec& s : parameterTable()) {
+    if (s.stage != stage || s.kind == ParameterSpec::File || !s.inCli()) continue;  // use_existing: an input choice
+    const std::string key = std::string("params.") + (s.inFilters() ? s.name : s.option);
+    switch (s.kind) {
+      case ParameterSpec::Real: figures.set(key, parameters.*s.real); break;
+      case ParameterSpec::Integer: figures.set(key, parameters.*s.integer); break;
+      case ParameterSpec::Flag: figures.set(key, parameters.*s.flag); break;
+      default: figures.set(key, parameters.valueText(s)); break;
+    }
+  }
+}
+
 namespace {
 
 const char* stageTitle(PipelineStage stage) {

@@ -5,6 +5,8 @@
 // this table; PipelineParameters holds the values a run uses.
 #pragma once
 
+#include "pipeline/figures.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -90,6 +92,10 @@ struct PipelineParameters {
   /// The value of `spec` as text (as stats.json's params.* and the log show it).
   std::string valueText(const ParameterSpec& spec) const;
 };
+
+/// Records params.NAME for the parameters of `stage` that fcql has (use_existing, an input
+/// choice of the filters, and file names left out): each stage's figures say what it ran with.
+void recordParameters(Figures& figures, const PipelineParameters& parameters, PipelineStage stage);
 
 /// The parameters as a Markdown list by stage (the README's parameter section).
 std::string parametersMarkdown();
