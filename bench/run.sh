@@ -288,7 +288,8 @@ builds running beside it, so times are ±30%):
   get the separatrices in their way freed (those a barrier-free path between two dangling
   ports meets tangentially, at most 16) and matched again by the solving cycle with weights
   that put covering a port before length; a trial is kept only where propagation then leaves
-  fewer t-junctions (at most 24 trials, `--completion-trials`).
+  fewer t-junctions (at most 24 trials, `--completion-trials`; since 2026-12-03 evening, 24 plus
+  1.25 per t-junction before it, each trial searching only from the ports it frees).
 - **Across to the border**: on a surface with a border, a port still dangling goes to the
   border (or another dangling port) across the layout, crossing separatrices orthogonally,
   before it is allowed to stop at a t-junction.

@@ -423,6 +423,45 @@ TEST(Tracing, EightPathsAreCoherentAndDeterministic) {
   EXPECT_EQ(a->h.tangentialCliques, b->h.tangentialCliques);
 }
 
+TEST(Tracing, SearchesReusingTheGraphsScratchFindWhatFreshSearchesFind) {
+  // traceFromPorts keeps its per-node arrays with the graph between calls (the completion runs
+  // hundreds of small searches); a search after others, with other sinks, limits and modes,
+  // must find exactly what a search with fresh arrays (traceFromPort) finds.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "eight");
+  TracingParameters params;
+  params.k = 4;
+  params.threads = 2;
+  auto t = trace(m, f, params);
+  const GeodesicGraph& g = *t->graph;
+  const int numPorts = int(g.ports().size());
+  ASSERT_GT(numPorts, 8);
+  std::vector<int> ports;
+  for (int p = 0; p < numPorts; ++p) ports.push_back(p);
+  std::vector<SearchOptions> variants(3);
+  variants[1].maxSinks = 2;
+  variants[1].sinkAllowed.assign(numPorts, 0);
+  for (int p = 0; p < numPorts; p += 2) variants[1].sinkAllowed[p] = 1;
+  variants[2].tJunctionMode = true;
+  variants[2].maxSinks = 1;
+  int compared = 0;
+  for (int round = 0; round < 2; ++round)
+    for (const SearchOptions& o : variants) {
+      const auto pooled = traceFromPorts(g, ports, o);
+      ASSERT_EQ(pooled.size(), ports.size());
+      for (int p = 0; p < numPorts; p += 3) {
+        const auto fresh = traceFromPort(g, p, o);
+        ASSERT_EQ(pooled[p].size(), fresh.size()) << "port " << p;
+        for (std::size_t i = 0; i < fresh.size(); ++i) {
+          EXPECT_EQ(pooled[p][i].sinkPort, fresh[i].sinkPort);
+          EXPECT_EQ(pooled[p][i].length, fresh[i].length);
+          EXPECT_EQ(pooled[p][i].points.size(), fresh[i].points.size());
+          ++compared;
+        }
+      }
+    }
+  EXPECT_GT(compared, 20);
+}
+
 TEST(Tracing, TangentialCliquesHoldExactlyTheArcsThatCrossTangentially) {
   // Graph H's tangential crossings come from cliques of chords per triangle. Checked against
   // every pair of pieces in every triangle: the pairs are exactly those that cross in a

@@ -29,6 +29,11 @@ namespace fcql {
 /// How many of Layout::leftPorts the front ends log, one line each (the rest are counted).
 constexpr std::size_t kLeftPortLines = 20;
 
+/// Completion trials granted per defect on top of LayoutParameters::completionTrials: the dragon's
+/// shipped field (795 singularities) leaves 326 defects after the solving cycle; its completion
+/// kept 10 of 24 trials (302 left), 58 of 200 (200 left), 73 of 400 (170 left).
+constexpr double kCompletionTrialsPerDefect = 1.25;
+
 struct LayoutParameters {
   /// Seconds per 0-1 program (≥ 1): a safety stop only. Where it is reached the selection
   /// depends on the machine's speed, and the log and Layout::ilpTimeLimitHit say so.
@@ -40,9 +45,10 @@ struct LayoutParameters {
   /// (bench/RESULTS.md has the measurements on the shared meshes).
   long ilpStallNodes = 50;
   int maxIterations = 20;    ///< bound on the solving cycle
-  /// Step 2b tries at most this many sets of separatrices to free (each a solving cycle on the
-  /// ports it frees plus a propagation to count the t-junctions): a bound in work, not time.
-  /// 0 leaves step 2b out.
+  /// Step 2b tries at most this many sets of separatrices to free, plus kCompletionTrialsPerDefect
+  /// per t-junction (or unresolved port) the layout has when it starts (each trial a solving
+  /// cycle on the ports it frees, and a propagation to count the t-junctions if fewer ports are
+  /// left dangling): a bound in work, not time. 0 leaves step 2b out.
   int completionTrials = 24;
   bool propagate = true;     ///< step 3
 

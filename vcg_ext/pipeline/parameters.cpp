@@ -103,9 +103,10 @@ std::vector<S> makeTable() {
                       "machine. 0: only the time limit stops it."));
   t.push_back(integer("completion_trials", "completion-trials", L, &P::completionTrials, 24, 0, 100000, "",
                       "Completion trials", "completion trials",
-                      "Where ports are left dangling after the solving cycle, up to this many sets of the "
-                      "separatrices in their way are freed and their ports matched again, each kept only if fewer "
-                      "t-junctions remain (a bound in work, not time). 0: no completion."));
+                      "Where ports are left dangling after the solving cycle, sets of the separatrices in their "
+                      "way are freed and their ports matched again, each kept only if fewer t-junctions remain: "
+                      "up to this many trials plus 1.25 per t-junction the layout had before (a bound in work, "
+                      "not time, that grows with what is left to mend). 0: no completion."));
   // ---- Quad
   t.push_back(real("scale", "scale", Q, &P::scale, 0.02, 1e-5, 1, "of the bounding-box diagonal",
                    "Quad size (fraction of the diagonal)",

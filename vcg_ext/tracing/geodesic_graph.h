@@ -41,6 +41,7 @@
 #include "tracing/sink_distance.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace fcql {
@@ -156,7 +157,13 @@ public:
   /// [firstPort[s], firstPort[s+1])).
   const std::vector<int>& firstPort() const { return firstPort_; }
 
+  /// Scratch space of the searches (separatrix_tracer.cpp: per-node arrays as large as the
+  /// graph), kept with the graph between calls: the completion runs hundreds of small searches,
+  /// and allocating and clearing those arrays for each call cost more than the searches.
+  std::shared_ptr<void>& searchScratch() const { return searchScratch_; }
+
 private:
+  mutable std::shared_ptr<void> searchScratch_;
   const SurfaceMesh* mesh_;
   const CrossField* field_;
   const FieldAnalysis* analysis_;

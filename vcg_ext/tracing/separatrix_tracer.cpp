@@ -7,6 +7,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace fcql {
@@ -358,6 +360,37 @@ std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, cons
 
 namespace {
 
+/// Searches ready for reuse on one graph (GeodesicGraph::searchScratch): reset() clears only the
+/// nodes a search touched, so a reused Search costs nothing up front.
+struct SearchPool {
+  std::mutex mutex;
+  std::vector<std::unique_ptr<Search>> idle;
+
+  std::unique_ptr<Search> take(const GeodesicGraph& graph) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!idle.empty()) {
+        std::unique_ptr<Search> s = std::move(idle.back());
+        idle.pop_back();
+        return s;
+      }
+    }
+    return std::make_unique<Search>(graph);
+  }
+  void give(std::unique_ptr<Search> s) {
+    std::lock_guard<std::mutex> lock(mutex);
+    idle.push_back(std::move(s));
+  }
+};
+
+SearchPool& searchPool(const GeodesicGraph& graph) {
+  static std::mutex creating;
+  std::lock_guard<std::mutex> lock(creating);
+  std::shared_ptr<void>& scratch = graph.searchScratch();
+  if (!scratch) scratch = std::make_shared<SearchPool>();
+  return *static_cast<SearchPool*>(scratch.get());
+}
+
 /// Search i from ports[i] with optionsOf(i), shared out among the threads port by port.
 template <class OptionsOf>
 std::vector<std::vector<TracedPath>> searchInParallel(const GeodesicGraph& graph, const std::vector<int>& ports,
@@ -366,16 +399,18 @@ std::vector<std::vector<TracedPath>> searchInParallel(const GeodesicGraph& graph
   const int threads = workerThreadCount(graph.parameters().threads, int(ports.size()));
   std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
+  SearchPool& pool = searchPool(graph);
   auto work = [&](int thread) {
     const bool reports = thread == 0;  // only the calling thread reports: callbacks need no locking
-    Search search(graph);
+    std::unique_ptr<Search> search = pool.take(graph);
     for (;;) {
       std::size_t i = next.fetch_add(1);
       if (i >= ports.size()) break;
-      results[i] = search.run(ports[i], optionsOf(i));
+      results[i] = search->run(ports[i], optionsOf(i));
       int finished = ++done;
       if (reports && progress) progress(finished, int(ports.size()));
     }
+    pool.give(std::move(search));
   };
   runOnWorkerThreads(threads, work);
   if (progress) progress(int(ports.size()), int(ports.size()));
