@@ -13,6 +13,42 @@
 namespace fcql {
 namespace {
 
+/// A vertex of a chart's n-gon that no loop position maps onto (the layout's loop has no vertex
+/// where a split put the node: a side too short to hold one) leaves the n-gon's corner there
+/// uncovered, since the loop's image crosses it along a chord; mean-value coordinates then map
+/// the patch onto less than the n-gon, and grid points near that corner fall outside the map
+/// (deckel at half size: 36 points, 7 folded quads). Each such vertex moves onto the chord, on
+/// its ray from the n-gon's centre: the chart's boundary is then the loop's image, still convex.
+void fitVerticesToLoop(std::vector<Vec2>& vertex, const std::vector<Vec2>& loopUv) {
+  const int m = int(loopUv.size());
+  if (m < 3) return;
+  auto wrap = [](double a) {  // into [0, 2π)
+    a = std::fmod(a, 2 * kPi);
+    return a < 0 ? a + 2 * kPi : a;
+  };
+  std::vector<double> angle(m);
+  for (int k = 0; k < m; ++k) angle[k] = std::atan2(loopUv[k].y(), loopUv[k].x());
+  for (Vec2& v : vertex) {
+    const bool onLoop = std::any_of(loopUv.begin(), loopUv.end(), [&](const Vec2& u) { return (u - v).norm() < 1e-9; });
+    if (onLoop) continue;
+    const double a = std::atan2(v.y(), v.x());
+    const Vec2 ray(std::cos(a), std::sin(a));
+    for (int k = 0; k < m; ++k) {
+      const Vec2 &A = loopUv[k], &B = loopUv[(k + 1) % m];
+      if (!(wrap(a - angle[k]) < wrap(angle[(k + 1) % m] - angle[k]))) continue;
+      const Vec2 d = B - A;
+      const double den = d.x() * ray.y() - d.y() * ray.x();
+      if (std::abs(den) < 1e-15) break;
+      const double s = -(A.x() * ray.y() - A.y() * ray.x()) / den;
+      v = A + std::clamp(s, 0.0, 1.0) * d;
+      break;
+    }
+  }
+}
+
+}  // namespace
+namespace {
+
 double polylineLength(const std::vector<Vec3>& p) {
   double l = 0;
   for (std::size_t i = 1; i < p.size(); ++i) l += (p[i] - p[i - 1]).norm();
@@ -262,14 +298,21 @@ private:
     const int n = int(edges.size());
     std::vector<Vec2> vertex(n);
     for (int i = 0; i < n; ++i) vertex[i] = Vec2(std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n));
-    nodeUv = vertex;
     const PatchReport& rep = layout_.patches[parent.layoutPatch];
     const int m = int(rep.loop.size());
     PolygonChart chart;
     chart.layoutPatch = parent.layoutPatch;
     chart.loopUv.resize(m);
-    for (int e = 0; e < n; ++e)
-      chart.nodeUv[edges[e].reversed ? g_.segments[edges[e].segment].nodeB : g_.segments[edges[e].segment].nodeA] = vertex[e];
+    // The n-gon's vertices go where the loop's image passes them (fitVerticesToLoop), then
+    // are the chart positions of the nodes.
+    auto finish = [&] {
+      fitVerticesToLoop(vertex, chart.loopUv);
+      nodeUv = vertex;
+      for (int e = 0; e < n; ++e)
+        chart.nodeUv[edges[e].reversed ? g_.segments[edges[e].segment].nodeB : g_.segments[edges[e].segment].nodeA] = vertex[e];
+      g_.charts.push_back(std::move(chart));
+      return int(g_.charts.size()) - 1;
+    };
     if (std::all_of(edges.begin(), edges.end(), [&](const SideSegment& e) { return !g_.segments[e.segment].vertices.empty(); })) {
       // Segments of the layout itself: each covers the loop positions from its loopStart on.
       for (int e = 0; e < n; ++e) {
@@ -283,8 +326,7 @@ private:
           chart.loopUv[(edges[e].loopStart + int(i)) % m] = vertex[e] * (1 - t) + vertex[(e + 1) % n] * t;
         }
       }
-      g_.charts.push_back(std::move(chart));
-      return int(g_.charts.size()) - 1;
+      return finish();
     }
     // Some segments were halved by neighbours' splits: arc-length position of every loop vertex
     // along its side (as unitSquareBoundary walks it), then along the segments of that side.
@@ -325,8 +367,7 @@ private:
       const int e = firstEdge[k] + int(j);
       chart.loopUv[pos] = vertex[e] * (1 - t) + vertex[(e + 1) % n] * t;
     }
-    g_.charts.push_back(std::move(chart));
-    return int(g_.charts.size()) - 1;
+    return finish();
   }
 
   const PatchMap& chartMap(int chart) {
