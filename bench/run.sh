@@ -1024,6 +1024,39 @@ within 0.02 s). What is left at 947K: the two factorisations (15 GFlop each, 34M
 the 20 MBO solves, each a forward and a backward pass through the factor (~0.3 s); the
 supernodal factor is ~850 MB of the 1.3 GB peak. METIS instead of AMD cuts the factor to 25M
 entries and a factorisation to ~2 s, but CHOLMOD's METIS analysis takes ~7 s here: no gain.
+
+## Completion: local trials, a budget that grows with the t-junctions (2026-12-03, evening)
+
+Profiled on the dragon (its field, α 15, k 10, `fcql layout`): a completion trial spent ~90% of
+its time in the solving cycle's searches from *every* dangling port (~300), and most of the rest
+allocating and clearing each search's per-node arrays (two arrays of 1.6M slots per thread and
+call). Now a trial searches only from the ports it frees, the two dangling ports it is for and
+the dangling ports of their singularities; it is propagated only if it leaves fewer ports
+dangling (of 200 trials, the 142 that did not never left fewer t-junctions); a set that failed is
+not tried again; the searches keep their arrays with the graph (`SearchPool`). The budget is
+`--completion-trials` (24) plus 1.25 per t-junction when the completion starts.
+
+| dragon, completion trials | t-junctions | patches | completion before | completion after |
+|---|---:|---:|---:|---:|
+| 24 (the old default) | 282 | 4839 | 2.3 s | 0.5 s |
+| 100 | 250 | – | 8.5 s | 3.4 s |
+| 200 | 181 | 5880 | 10.5 s | 3.1–3.9 s |
+| 400 | 151 | 6400 | 21 s | 7.1 s |
+| 432 (24 + 1.25 × 326, the new default) | **140** | 6605 | – | 7.5 s |
+
+The kept trials are the same as before at equal counts (the other dangling ports' searches
+found what they had found when the cycle settled). The dragon's layout took 4.6 s in the bench
+before and 9.3–11.7 s now (the paper's 64 s: 6.9× ours), its quad stage 16 → 23–26 s with the
+1766 more patches, whole run 21 → 32–38 s; misaligned quads 39.8 → 36.8%, folded quads 29 → 12.
+Every other shared mesh's figures are unchanged; fertility, deckel and lilium try 27–29 sets
+(none kept, as with 24).
+
+Deckel at half size (`--scale 0.01`): its 7 folded quads were in a split patch whose chart (a
+regular n-gon, its sides by arc length) had a vertex where the layout's loop has none (a split
+node on a side of 0.39 units with no loop vertex inside), so the loop's image cut that corner
+along a chord and 36 grid points fell outside the mean-value map. The vertex now moves onto that
+chord (`zero_chains.cpp`, fitVerticesToLoop): 0 points outside, 0 folds (min scaled Jacobian
+−0.62 → 0.10, Hausdorff 0.62 → 0.31%).
 NOTES
   if [ ${#pictures[@]} -gt 0 ]; then
     echo
