@@ -176,9 +176,10 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
       if (failed.count(key)) continue;
       ++report.trials;
       // Only the ports this frees and the two it is for (and the dangling ports of their
-      // singularities) are searched from; every free port is a sink. The other dangling ports' searches would find what they found when the solving
-      // cycle settled: on the dragon, searching from all ~300 of them made 90% of a trial's time
-      // and changed no trial's outcome (326 -> 250 defects in 100 trials, 34 kept, either way).
+      // singularities) are searched from; every free port is a sink. The other dangling ports'
+      // searches would find what they found when the solving cycle settled: on the dragon,
+      // searching from all ~300 of them made 90% of a trial's time and changed no trial's
+      // outcome (326 -> 250 defects in 100 trials, 34 kept, either way).
       Layout trial = layout;
       // The new separatrices replace those freed and the path that showed them: none is sought
       // much longer than the longest of these (the searches would otherwise run through the

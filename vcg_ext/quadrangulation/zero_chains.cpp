@@ -46,9 +46,6 @@ void fitVerticesToLoop(std::vector<Vec2>& vertex, const std::vector<Vec2>& loopU
   }
 }
 
-}  // namespace
-namespace {
-
 double polylineLength(const std::vector<Vec3>& p) {
   double l = 0;
   for (std::size_t i = 1; i < p.size(); ++i) l += (p[i] - p[i - 1]).norm();

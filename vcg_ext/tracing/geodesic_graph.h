@@ -159,11 +159,20 @@ public:
 
   /// Scratch space of the searches (separatrix_tracer.cpp: per-node arrays as large as the
   /// graph), kept with the graph between calls: the completion runs hundreds of small searches,
-  /// and allocating and clearing those arrays for each call cost more than the searches.
-  std::shared_ptr<void>& searchScratch() const { return searchScratch_; }
+  /// and allocating and clearing those arrays for each call cost more than the searches. The
+  /// searches in it refer to this graph, so a copy or a moved-to graph starts without any.
+  std::shared_ptr<void>& searchScratch() const { return searchScratch_.scratch; }
 
 private:
-  mutable std::shared_ptr<void> searchScratch_;
+  struct ScratchSlot {
+    std::shared_ptr<void> scratch;
+    ScratchSlot() = default;
+    ScratchSlot(const ScratchSlot&) {}
+    ScratchSlot(ScratchSlot&&) noexcept {}
+    ScratchSlot& operator=(const ScratchSlot&) { scratch.reset(); return *this; }
+    ScratchSlot& operator=(ScratchSlot&&) noexcept { scratch.reset(); return *this; }
+  };
+  mutable ScratchSlot searchScratch_;
   const SurfaceMesh* mesh_;
   const CrossField* field_;
   const FieldAnalysis* analysis_;
