@@ -17,10 +17,9 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 # shellcheck source=lib/pymeshlab_host.bash
 source "$here/lib/pymeshlab_host.bash"
 [ -x "$fcql" ] || skip "fcql is not built"
-host_bin="$build/bin/fcql_pymeshlab_host"
-plugin2025="$build/lib/meshlab-2025.07/libfilter_fieldquadlayout2025.so"
-[ -x "$host_bin" ] && [ -f "$plugin2025" ] || skip "the pymeshlab host is not built (FCQL_BUILD_PLUGIN_2025=OFF)"
+pm_require_host "$build"
 ml_setup "$build" figures_agree
+pm_host_dirs
 all=$(example_script all_steps) || ml_finish figures_agree
 ml_prepare_meshes "$fcql" "$shared"
 

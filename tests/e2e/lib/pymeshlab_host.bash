@@ -5,19 +5,30 @@
 # shellcheck source=meshlab_overlay.bash
 source "$(dirname "${BASH_SOURCE[0]}")/meshlab_overlay.bash"
 
+# pm_require_host BUILD_DIR: sets $host_bin and $plugin2025; skips the test when the build has
+# no FilterPlugin adapter (FCQL_BUILD_PLUGIN_2025=OFF).
+pm_require_host() {
+  host_bin="$1/bin/fcql_pymeshlab_host"
+  plugin2025="$1/lib/meshlab-2025.07/libfilter_fieldquadlayout2025.so"
+  [ -x "$host_bin" ] && [ -f "$plugin2025" ] ||
+    skip "fcql_pymeshlab_host / libfilter_fieldquadlayout2025.so not built (FCQL_BUILD_PLUGIN_2025=OFF)"
+}
+
+# pm_host_dirs: the host's private runtime and configuration folder, $work/xdg (see host).
+pm_host_dirs() {
+  mkdir -p "$work/xdg"
+  chmod 700 "$work/xdg"
+}
+
 # pm_setup BUILD_DIR NAME: sets $work (BUILD_DIR/e2e_NAME, emptied), $host_bin, $plugin2025;
 # skips the test when the build has no FilterPlugin adapter (FCQL_BUILD_PLUGIN_2025=OFF).
 pm_setup() {
   local build=$1 name=$2
   [ -n "$build" ] && [ -d "$build" ] || skip "no build directory given"
-  host_bin="$build/bin/fcql_pymeshlab_host"
-  plugin2025="$build/lib/meshlab-2025.07/libfilter_fieldquadlayout2025.so"
-  [ -x "$host_bin" ] && [ -f "$plugin2025" ] ||
-    skip "fcql_pymeshlab_host / libfilter_fieldquadlayout2025.so not built (FCQL_BUILD_PLUGIN_2025=OFF)"
+  pm_require_host "$build"
   work="$build/e2e_$name"
   rm -rf "$work"
-  mkdir -p "$work/xdg"
-  chmod 700 "$work/xdg"
+  pm_host_dirs
 }
 
 pm_finish() { ml_finish "$@"; }
