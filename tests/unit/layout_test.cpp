@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -433,6 +434,27 @@ TEST(LayoutCompletion, EightGetsAConformingLayoutByReRoutingSeparatrices) {
   EXPECT_EQ(s->layout.danglingAfterCycle, 0);
   EXPECT_TRUE(s->layout.leftPorts.empty());
   for (const auto& p : s->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
+}
+
+TEST(LayoutCompletion, TheTrialBudgetGrowsWithTheTJunctionsLeft) {
+  // --completion-trials plus kCompletionTrialsPerDefect per defect (t-junction or unresolved
+  // port) when the completion starts; 0 leaves the completion out. The lilium's completion keeps
+  // no trial and has more options than that, so it uses the whole budget.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "lilium");
+  LayoutParameters few;
+  few.completionTrials = 3;
+  auto s = solve(m, f, {}, few);
+  const CompletionReport& c = s->layout.completion;
+  ASSERT_GT(c.tJunctionsBefore, 0);
+  ASSERT_EQ(c.accepted, 0) << "the lilium's completion keeps a trial now: pick another case";
+  const int budget = 3 + int(std::ceil(kCompletionTrialsPerDefect * c.tJunctionsBefore));
+  EXPECT_EQ(c.trials, budget);
+  for (const auto& [port, why] : c.reasons)
+    EXPECT_NE(why.find("the completion's " + std::to_string(budget) + " trials were used up"), std::string::npos)
+        << "port " << port << ": " << why;
+  LayoutParameters none;
+  none.completionTrials = 0;
+  EXPECT_EQ(solve(m, f, {}, none)->layout.completion.trials, 0);
 }
 
 TEST(LayoutCompletion, EveryPortLeftIsNamedWithItsReason) {
