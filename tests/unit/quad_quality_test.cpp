@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace fcql;
@@ -100,4 +101,58 @@ TEST(QuadQuality, EachFaceIsMeasuredAgainstTheQuadOverIt) {
   EXPECT_EQ(r.misalignedPercent, 20);  // per quad: the right grid's 16 of 80
   EXPECT_GE(r.misalignedFacesPercent, 45);
   EXPECT_LE(r.misalignedFacesPercent, 60);
+}
+
+namespace {
+
+/// An n × n grid of quads on a bumpy height field (so that the normals differ per vertex).
+QuadMesh bumpyGrid(int n) {
+  QuadMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      m.positions.push_back(Vec3(i, j, 0.3 * std::sin(1.3 * i) * std::cos(0.7 * j)));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      m.quads.push_back({j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i});
+  return m;
+}
+
+}  // namespace
+
+TEST(QuadQuality, TrackedNormalsGiveTheSameFiguresAsComputedOnes) {
+  // The untangling and the fold repair move one vertex at a time and keep the normals with
+  // moved(): every figure must equal, bit for bit, the one computed from scratch, also for
+  // quads folded by the moves.
+  QuadMesh tracked = bumpyGrid(8);
+  QuadMesh fresh = tracked;
+  const QuadJacobian keeping(tracked), computing(fresh);
+  keeping.track();
+  std::vector<int> all(tracked.quads.size());
+  for (int q = 0; q < int(all.size()); ++q) all[q] = q;
+  std::vector<double> a, b;
+  int folded = 0;
+  for (int step = 0; step < 200; ++step) {
+    const int v = (step * 37) % tracked.numVertices();
+    const Vec3 move(0.9 * std::sin(step), 0.9 * std::cos(2.0 * step), 0.5 * std::sin(3.0 * step));
+    tracked.positions[v] += move;
+    fresh.positions[v] += move;
+    keeping.moved(v);
+    keeping.values(all, a);
+    computing.values(all, b);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << "quad " << i << " after step " << step;
+    for (int w = 0; w < tracked.numVertices(); ++w) {
+      const Vec3 kept = keeping.normals()[w], computed = computing.vertexNormal(w);
+      ASSERT_EQ(kept, computed) << "vertex " << w << " after step " << step;
+    }
+    folded += int(std::count_if(a.begin(), a.end(), [](double j) { return j <= 0; }));
+  }
+  EXPECT_GT(folded, 0);  // the moves did fold quads: the comparison covered them
+  // Untracked again: values() computes the normals itself, from the positions as they are now.
+  keeping.untrack();
+  tracked.positions[0] += Vec3(0.5, 0.5, 0.5);
+  fresh.positions[0] += Vec3(0.5, 0.5, 0.5);
+  keeping.values(all, a);
+  computing.values(all, b);
+  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << "quad " << i << " untracked";
 }

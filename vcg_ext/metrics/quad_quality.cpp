@@ -222,6 +222,37 @@ QuadJacobian::QuadJacobian(const QuadMesh& mesh, bool surfaceNormals)
     for (int v : mesh.quads[q]) quadsOf_[v].push_back(q);
 }
 
+Vec3 QuadJacobian::quadNormal(int q) const {
+  const auto& P = mesh_.positions;
+  const auto& f = mesh_.quads[q];
+  const Vec3 n = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
+  const double l = n.norm();
+  return l > 0 ? Vec3(n / l) : Vec3(Vec3::Zero());
+}
+
+Vec3 QuadJacobian::normalFromKept(int v) const {
+  Vec3 sum = Vec3::Zero();
+  for (int q : quadsOf_[v]) sum += quadNormal_[q];
+  const double l = sum.norm();
+  return l > 0 ? Vec3(sum / l) : Vec3(Vec3::Zero());
+}
+
+void QuadJacobian::track() const {
+  quadNormal_.resize(mesh_.quads.size());
+  for (int q = 0; q < int(quadNormal_.size()); ++q) quadNormal_[q] = quadNormal(q);
+  normalCache_.resize(mesh_.positions.size());
+  for (int v = 0; v < int(normalCache_.size()); ++v) normalCache_[v] = normalFromKept(v);
+  stamp_.assign(mesh_.positions.size(), 0);  // the per-call cache of values() starts again afterwards
+  tracking_ = true;
+}
+
+void QuadJacobian::moved(int v) const {
+  if (!tracking_) return;
+  for (int q : quadsOf_[v]) quadNormal_[q] = quadNormal(q);
+  for (int q : quadsOf_[v])
+    for (int w : mesh_.quads[q]) normalCache_[w] = normalFromKept(w);
+}
+
 Vec3 QuadJacobian::vertexNormal(int v) const {
   const auto& P = mesh_.positions;
   Vec3 sum = Vec3::Zero();
@@ -259,6 +290,12 @@ double QuadJacobian::operator()(int q) const {
 }
 
 void QuadJacobian::values(const std::vector<int>& quads, std::vector<double>& out) const {
+  out.resize(quads.size());
+  if (tracking_) {
+    for (std::size_t i = 0; i < quads.size(); ++i)
+      out[i] = evaluate(quads[i], [&](int v) -> const Vec3& { return normalCache_[v]; });
+    return;
+  }
   if (normalCache_.size() != mesh_.positions.size()) normalCache_.assign(mesh_.positions.size(), Vec3::Zero()), stamp_.assign(mesh_.positions.size(), 0);
   if (++epoch_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), epoch_ = 1;
   auto normalAt = [&](int v) -> const Vec3& {

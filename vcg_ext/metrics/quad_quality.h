@@ -87,6 +87,17 @@ public:
   void dependents(const std::vector<int>& vertices, std::vector<int>& out) const;
   const std::vector<int>& quadsAround(int v) const { return quadsOf_[v]; }
 
+  /// Keep the surface normal of every vertex (computed now) until untrack(), for callers that
+  /// move one vertex at a time and evaluate the quads around it many times (the untangling and
+  /// the fold repair): values() and normals() then read the kept normals instead of computing
+  /// them, and a caller that moves vertex v must call moved(v), which updates the normals of
+  /// the corners of v's quads (the only ones v changes). Same figures as without, bit for bit.
+  void track() const;
+  void moved(int v) const;
+  void untrack() const { tracking_ = false; }
+  /// The kept normals (valid while tracking), indexed by vertex.
+  const std::vector<Vec3>& normals() const { return normalCache_; }
+
 private:
   const QuadMesh& mesh_;
   template <class Normal>
@@ -98,6 +109,12 @@ private:
   mutable std::vector<Vec3> normalCache_;  ///< per vertex, valid where stamp_ == epoch_
   mutable std::vector<unsigned> stamp_;
   mutable unsigned epoch_ = 0;
+  mutable bool tracking_ = false;
+  mutable std::vector<Vec3> quadNormal_;  ///< per quad, unit, kept while tracking
+  /// The unit normal of quad q at the current positions (zero if it has no area).
+  Vec3 quadNormal(int q) const;
+  /// v's normal from the kept quad normals: the same sum, in the same order, as vertexNormal.
+  Vec3 normalFromKept(int v) const;
 };
 
 struct QuadQuality {

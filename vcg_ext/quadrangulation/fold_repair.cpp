@@ -18,12 +18,11 @@ struct Part {
 };
 
 /// Σ over the corners of quad q of max(0, ε − J)² + max(0, ε − α / area)², J the corner's
-/// scaled Jacobian and α its area (e1 × e2)·n, both against normal[corner], or with `dynamic`
-/// against the quad mesh's normal at the corner, plus then the term of J against the quad's
-/// own normal (as QuadJacobian measures). The area term keeps corners from collapsing: J is
-/// not defined at a point and gives no gradient there.
-double quadEnergy(const QuadMesh& mesh, int q, const std::vector<Vec3>& normal, double area,
-                  const QuadJacobian* dynamic) {
+/// scaled Jacobian and α its area (e1 × e2)·n, both against normal[corner] (fixed, or with
+/// `dynamic` the quad mesh's normals at the current positions), plus with `dynamic` the term
+/// of J against the quad's own normal (as QuadJacobian measures). The area term keeps corners
+/// from collapsing: J is not defined at a point and gives no gradient there.
+double quadEnergy(const QuadMesh& mesh, int q, const std::vector<Vec3>& normal, double area, bool dynamic) {
   const auto& f = mesh.quads[q];
   const auto& P = mesh.positions;
   double e = 0;
@@ -38,7 +37,7 @@ double quadEnergy(const QuadMesh& mesh, int q, const std::vector<Vec3>& normal, 
     const Vec3 e2 = P[f[(i + 3) % 4]] - P[f[i]];
     const double l = e1.norm() * e2.norm();
     const Vec3 c = e1.cross(e2);
-    const Vec3 n = dynamic ? dynamic->vertexNormal(f[i]) : normal[f[i]];
+    const Vec3& n = normal[f[i]];
     const double a = c.dot(n);
     e += hinge(l > 0 ? a / l : -1) + hinge(a / area);
     if (dynamic) e += hinge(l > 0 ? c.dot(own) / l : -1);
@@ -136,7 +135,10 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
   auto& P = mesh.positions;
   const std::size_t m = part.vertices.size();
   // Each quad's reference area: the square of the mean edge length at its corners.
-  const QuadJacobian* dynamic = dynamicNormals ? &jacobian : nullptr;
+  const bool dynamic = dynamicNormals;
+  // With dynamic normals, the mesh's own, kept by the jacobian as each vertex moves.
+  if (dynamic) jacobian.track();
+  const std::vector<Vec3>& cornerNormal = dynamic ? jacobian.normals() : normal;
   std::vector<int> quads = part.quads;
   if (dynamic) jacobian.dependents(part.vertices, quads);
   std::vector<double> area(quads.size(), 0);
@@ -152,7 +154,7 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
     for (int q : dependent)
       around[i].push_back(std::size_t(std::lower_bound(quads.begin(), quads.end(), q) - quads.begin()));
   }
-  auto quadE = [&](std::size_t k) { return area[k] > 0 ? quadEnergy(mesh, quads[k], normal, area[k], dynamic) : 0.0; };
+  auto quadE = [&](std::size_t k) { return area[k] > 0 ? quadEnergy(mesh, quads[k], cornerNormal, area[k], dynamic) : 0.0; };
   std::size_t current = 0;
   auto local = [&](int) {
     double e = 0;
@@ -180,12 +182,15 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
       const double h = 1e-4 * edge[i];
       for (const Vec3& t : {t1, t2}) {
         P[v] = x + h * t;
+        jacobian.moved(v);
         const double plus = local(v);
         P[v] = x - h * t;
+        jacobian.moved(v);
         const double minus = local(v);
         direction[i] -= t * ((plus - minus) / (2 * h)) * edge[i] * edge[i];
       }
       P[v] = x;
+      jacobian.moved(v);
       largest = std::max(largest, direction[i].norm() / edge[i]);
     }
     if (!(largest > 0)) break;
@@ -194,6 +199,7 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
     for (;;) {
       for (std::size_t i = 0; i < m; ++i)
         P[part.vertices[i]] = place(part.vertices[i], start[i] + direction[i] * (alpha * cap));
+      for (int v : part.vertices) jacobian.moved(v);
       const double tried = total();
       if (tried < energy) {
         energy = tried;
@@ -203,10 +209,12 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
       alpha /= 2;
       if (alpha <= 1e-4) {
         for (std::size_t i = 0; i < m; ++i) P[part.vertices[i]] = start[i];
+        for (int v : part.vertices) jacobian.moved(v);
         break;
       }
     }
   }
+  jacobian.untrack();
 }
 
 }  // namespace

@@ -119,6 +119,8 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
     std::sort(corners.begin() + first, corners.end());
     corners.erase(std::unique(corners.begin() + first, corners.end()), corners.end());
     bool changed = false;
+    // One vertex moves at a time: the normals it changes are updated as it moves (moved()).
+    jacobian.track();
     for (std::size_t i = 0; i < corners.size(); ++i) {
       const int v = corners[i];
       if (!movable(v)) continue;
@@ -148,6 +150,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
       Vec3 bestPosition = original;
       for (const Vec3& c : candidates) {
         quads.positions[v] = place(v, c);
+        jacobian.moved(v);
         const double s = shortfall();
         if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
       }
@@ -158,6 +161,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
       edge /= double(neighbours[v].size());
       for (double r = 0.5 * edge; r > 0.02 * edge;) {
         quads.positions[v] = bestPosition;
+        jacobian.moved(v);
         const Vec3 n = jacobian.vertexNormal(v);
         if (n.isZero() || !(best > 0)) break;
         const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
@@ -165,14 +169,17 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
         for (int k = 0; k < 8; ++k) {
           const double a = k * kPi / 4;
           quads.positions[v] = place(v, from + (t1 * std::cos(a) + t2 * std::sin(a)) * r);
+          jacobian.moved(v);
           const double s = shortfall();
           if (s < best - 1e-9) best = s, bestPosition = quads.positions[v];
         }
         if (bestPosition == from) r /= 2;
       }
       quads.positions[v] = bestPosition;
+      jacobian.moved(v);
       if (bestPosition != original) changed = true, ++report.untangledMoves;
     }
+    jacobian.untrack();
     if (!changed) break;
   }
   // Folds left in clusters (a patch's grid folded over itself) need several vertices to move
