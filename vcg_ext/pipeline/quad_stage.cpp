@@ -56,8 +56,12 @@ void describe(const QuadStageResult& s, const QuadrangulationOptions& options, i
                 " grid points fell outside their patch map (degenerate patches): their quads are distorted");
   if (r.polygonPatches > 0)
     log.info(std::to_string(r.polygonPatches) + " layout patches with 3, 5 or more corners cut into quads as n-gons");
-  char target[48];
-  std::snprintf(target, sizeof target, "%.6g", s.targetEdgeLength);
+  // The edge length the quads were made with: the asked one unless the distance bound refined it.
+  char target[96];
+  if (r.targetEdgeLength > 0 && r.targetEdgeLength != s.targetEdgeLength)
+    std::snprintf(target, sizeof target, "%.6g, refined from %.6g", r.targetEdgeLength, s.targetEdgeLength);
+  else
+    std::snprintf(target, sizeof target, "%.6g", s.targetEdgeLength);
   log.info("Quad mesh: " + std::to_string(q.numQuads()) + " quads, " + std::to_string(q.numVertices()) + " vertices, " +
            std::to_string(r.report.irregularVertices) + " irregular vertices, genus " + std::to_string(r.report.genus) +
            ", " + std::to_string(r.report.borderLoops) + " border loops (target edge length " + target + ")");

@@ -109,6 +109,7 @@ IntegerProgram::Result IntegerProgram::solve(double timeLimitSeconds) const {
   if (!lp) return result;
   setTimeLimit(lp.get(), timeLimitSeconds);
   set_mip_gap(lp.get(), FALSE, relativeGap_);
+  if (branchDownFirst_) set_bb_floorfirst(lp.get(), BRANCH_FLOOR);
   BranchAndBoundWatch watch;
   watch.stallNodes = stallNodes_;
   watch.nodeLimit = nodeLimit_;

@@ -54,6 +54,9 @@ public:
   /// on any machine. On large programs lp_solve finds its best solution soon after the LP
   /// relaxation and then spends long on nodes that barely improve it.
   void setStallNodes(long nodes) { stallNodes_ = nodes; }
+  /// Branch and bound tries the lower branch (x ≤ ⌊x*⌋) of a fractional variable first
+  /// instead of lp_solve's default upper one (its BRANCH_CEILING).
+  void setBranchDownFirst(bool down) { branchDownFirst_ = down; }
   /// Branch and bound stops after this many nodes in all (0: no limit), keeping the best
   /// solution found (status WorkLimit).
   void setNodeLimit(long nodes) { nodeLimit_ = nodes; }
@@ -89,6 +92,7 @@ private:
   bool maximize_ = false;
   double relativeGap_ = 1e-9;
   long stallNodes_ = 0;
+  bool branchDownFirst_ = false;
   long nodeLimit_ = 0;
 };
 
