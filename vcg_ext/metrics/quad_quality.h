@@ -106,7 +106,7 @@ private:
   std::vector<std::vector<int>> quadsOf_;
   bool surfaceNormals_ = true;
   std::vector<Vec3> referenceNormals_;  ///< per quad, if given
-  mutable std::vector<Vec3> normalCache_;  ///< per vertex, valid where stamp_ == epoch_
+  mutable std::vector<Vec3> normalCache_;  ///< per vertex: all valid while tracking, else where stamp_ == epoch_
   mutable std::vector<unsigned> stamp_;
   mutable unsigned epoch_ = 0;
   mutable bool tracking_ = false;
