@@ -156,3 +156,62 @@ TEST(QuadQuality, TrackedNormalsGiveTheSameFiguresAsComputedOnes) {
   computing.values(all, b);
   for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << "quad " << i << " untracked";
 }
+
+TEST(QuadQuality, DeviationBoundIsAnUpperBoundAndTightWhereAPassFails) {
+  // A bump of height 0.1 over the unit square against a flat 4 × 4 quad grid, and a reference
+  // distance from both surfaces sampled on barycentric grids 0.005 apart. Within the limit the
+  // bound must prove it (bound ≤ limit); above it, the measure may stop cutting early, but its
+  // bound must still be an upper bound, within 5% of the true distance's excess over the
+  // limit, and found with few samples even though the resolution asked is tiny.
+  const int n = 40;
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> faces;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = double(i) / n, y = double(j) / n;
+      positions.push_back(Vec3(x, y, 0.1 * std::sin(kPi * x) * std::sin(kPi * y)));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      faces.push_back({a, a + 1, a + n + 2});
+      faces.push_back({a, a + n + 2, a + n + 1});
+    }
+  const ClosestPointIndex surface(positions, faces);
+  const QuadMesh quads = grid(4, 0, 0);
+  const std::vector<std::array<int, 3>> quadTris = quadTriangles(quads);
+  const ClosestPointIndex quadIndex(quads.positions, quadTris);
+  const double spacing = 0.005;
+  auto farthest = [&](const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T, const ClosestPointIndex& other) {
+    double worst = 0;
+    for (const auto& t : T) {
+      const Vec3 &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
+      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      const int m = std::max(1, int(std::ceil(longest / spacing)));
+      for (int i = 0; i <= m; ++i)
+        for (int k = 0; i + k <= m; ++k)
+          worst = std::max(worst, other.closest(a + (b - a) * (double(i) / m) + (c - a) * (double(k) / m)).distance);
+    }
+    return worst;
+  };
+  const double dense = std::max(farthest(quads.positions, quadTris, surface), farthest(positions, faces, quadIndex));
+  ASSERT_GT(dense, 0.09);
+  ASSERT_LT(dense, 0.1 + 1e-9);
+
+  const SurfaceDeviation within = measureDeviation(quads, surface, 2 * dense, 1e-3);
+  EXPECT_LE(within.bound, 2 * dense);
+  EXPECT_GE(within.bound, dense - 1e-12);
+  EXPECT_TRUE(within.farPoints.empty());
+
+  const double limit = dense / 3;
+  const SurfaceDeviation failed = measureDeviation(quads, surface, limit, 1e-4);
+  EXPECT_GT(failed.distance, limit);
+  EXPECT_LE(failed.distance, failed.bound);
+  EXPECT_GE(failed.bound, dense - 1e-12);
+  // The true distance is within the reference's sample spacing of it.
+  EXPECT_LE(failed.bound, dense + spacing + 0.05 * (dense + spacing - limit));
+  EXPECT_FALSE(failed.farPoints.empty());
+  // Cut to the resolution wherever the quads are over the limit, as it was, there would be
+  // millions of far samples.
+  EXPECT_LT(failed.farPoints.size(), 50000u);
+}

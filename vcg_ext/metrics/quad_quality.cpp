@@ -93,8 +93,13 @@ double coverRadius(const Vec3& a, const Vec3& b, const Vec3& c) {
   return r;
 }
 
-/// How many times the limit a distance found must be for measureOneWay to cut coarser.
-constexpr double kFarBeyond = 4;
+/// Once a distance found exceeds the limit, measureOneWay seeks the bound to within this
+/// fraction of the excess only: the pass fails whatever the precision, and the bound then only
+/// sets the next pass's size (its square root does, up to 3.24 times the limit; beyond, the
+/// size is halved) and tells whether that pass got closer. Relative to the excess, not to
+/// the distance: a pass a little over the limit keeps the resolution's precision, as its
+/// next size depends on it most (5% of the distance made rockerarm's refined pass 20% finer).
+constexpr double kFailedPassPrecision = 0.05;
 
 /// One way of the two-sided distance: the triangles `triangles` over `positions` against
 /// `other`. Each triangle's vertices are measured (once per vertex), then the triangle is cut
@@ -128,13 +133,13 @@ void measureOneWay(const std::vector<Vec3>& positions, const std::vector<std::ar
       const double worst = std::max({piece.dist[0], piece.dist[1], piece.dist[2]});
       const double radius = coverRadius(piece.p[0], piece.p[1], piece.p[2]);
       const double bound = worst + radius;
-      // Once the largest distance found is kFarBeyond times the limit, the bound is sought to
-      // within 2% of that distance only: such a pass fails whatever the precision, and a
-      // refinement then halves the target edge (quadrangulate's step is clamped at 0.5 from
-      // 3.24 times the limit on). A tiny limit had every pass cut to the resolution over most
-      // of the surface (the e2e unmet-bound case: millions of samples a measurement).
+      // Once the largest distance found exceeds the limit, the bound is sought to within
+      // kFailedPassPrecision of the excess. Cutting to the resolution (2% of the limit)
+      // wherever the distance is above the limit took millions of samples a measurement on a
+      // coarse pass (26 s of the rounded box's run at --scale 0.3, 7 s now), and a tiny limit
+      // had every pass cut that finely over most of the surface.
       const double finest =
-          limit > 0 && d.distance > kFarBeyond * limit ? std::max(resolution, 0.02 * d.distance) : resolution;
+          limit > 0 && d.distance > limit ? std::max(resolution, kFailedPassPrecision * (d.distance - limit)) : resolution;
       if (bound <= std::max(limit, d.distance) || radius <= finest) {
         d.bound = std::max(d.bound, bound);
         if (limit > 0 && bound > limit && worst <= limit) {
@@ -254,14 +259,8 @@ void QuadJacobian::moved(int v) const {
 }
 
 Vec3 QuadJacobian::vertexNormal(int v) const {
-  const auto& P = mesh_.positions;
   Vec3 sum = Vec3::Zero();
-  for (int q : quadsOf_[v]) {
-    const auto& f = mesh_.quads[q];
-    const Vec3 n = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
-    const double l = n.norm();
-    if (l > 0) sum += n / l;
-  }
+  for (int q : quadsOf_[v]) sum += quadNormal(q);
   const double l = sum.norm();
   return l > 0 ? Vec3(sum / l) : Vec3(Vec3::Zero());
 }
@@ -308,17 +307,12 @@ void QuadJacobian::values(const std::vector<int>& quads, std::vector<double>& ou
 
 void QuadJacobian::all(std::vector<double>& out) const {
   // Each quad's unit normal once, then each vertex's normal from them.
-  const auto& P = mesh_.positions;
-  std::vector<Vec3> quadNormal(mesh_.quads.size());
-  for (std::size_t q = 0; q < quadNormal.size(); ++q) {
-    const auto& f = mesh_.quads[q];
-    const Vec3 n = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
-    const double l = n.norm();
-    quadNormal[q] = l > 0 ? Vec3(n / l) : Vec3(Vec3::Zero());
-  }
-  std::vector<Vec3> normal(P.size(), Vec3::Zero());
-  for (std::size_t v = 0; v < P.size(); ++v) {
-    for (int q : quadsOf_[v]) normal[v] += quadNormal[q];
+  std::vector<Vec3> unitNormal(mesh_.quads.size());
+  for (std::size_t q = 0; q < unitNormal.size(); ++q) unitNormal[q] = quadNormal(int(q));
+  const std::size_t numVertices = mesh_.positions.size();
+  std::vector<Vec3> normal(numVertices, Vec3::Zero());
+  for (std::size_t v = 0; v < numVertices; ++v) {
+    for (int q : quadsOf_[v]) normal[v] += unitNormal[q];
     const double l = normal[v].norm();
     normal[v] = l > 0 ? Vec3(normal[v] / l) : Vec3(Vec3::Zero());
   }

@@ -41,11 +41,11 @@ namespace fcql {
 
 /// The two-sided distance (see above) between `quads` and the surface `surfaceIndex` indexes.
 /// With limit > 0, triangles are cut until their bound is within max(limit, the largest
-/// distance found) or their cover radius is at most `resolution` (or 2% of the largest
-/// distance found, once that is more than 4 times the limit: the pass fails by far whatever
-/// the precision); farPoints are the samples
-/// farther than limit and the worst point of each triangle left undecided (bound above the
-/// limit at the finest resolution). With limit = 0, the largest distance is sought to within
+/// distance found) or their cover radius is at most `resolution` (or 5% of the largest
+/// distance found minus the limit, once that is positive: the pass fails whatever the
+/// precision, and the bound is then within 5% of the excess); farPoints are the samples farther than
+/// limit and the worst point of each triangle left undecided (bound above the limit at the
+/// finest resolution). With limit = 0, the largest distance is sought to within
 /// `resolution`. Exact where it matters: bound ≤ limit guarantees that every point of either
 /// surface is within limit of the other.
 struct SurfaceDeviation {

@@ -131,16 +131,15 @@ double meanEdge(const QuadMesh& mesh, const QuadJacobian& jacobian, int v) {
 /// on the surface or its feature line.
 template <class Place>
 void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, const Place& place,
-             const std::vector<Vec3>& normal, bool dynamicNormals) {
+             const std::vector<Vec3>& normal, bool dynamic) {
   auto& P = mesh.positions;
   const std::size_t m = part.vertices.size();
-  // Each quad's reference area: the square of the mean edge length at its corners.
-  const bool dynamic = dynamicNormals;
   // With dynamic normals, the mesh's own, kept by the jacobian as each vertex moves.
   if (dynamic) jacobian.track();
   const std::vector<Vec3>& cornerNormal = dynamic ? jacobian.normals() : normal;
   std::vector<int> quads = part.quads;
   if (dynamic) jacobian.dependents(part.vertices, quads);
+  // Each quad's reference area: the square of the mean edge length at its corners.
   std::vector<double> area(quads.size(), 0);
   for (std::size_t k = 0; k < quads.size(); ++k) {
     for (int v : mesh.quads[quads[k]]) area[k] += meanEdge(mesh, jacobian, v) / 4;
