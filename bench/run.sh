@@ -443,6 +443,25 @@ mesh at the 20% limit; elsewhere CPU time changes by −13% to +8%.
 
 ## Speed: profile and changes
 
+### A coarser measure of passes that are over the distance bound (issue 21, eleventh session, 2026-12-04)
+
+The distance measure cut every triangle whose bound was above the limit down to a cover radius
+of 2% of the limit. On a coarse pass that is everywhere: the rounded box at `--scale 0.3`
+(refined 4 times) made 1–2 million closest-point queries per measurement and ran 26 s, 95% of
+it in `ClosestPointIndex::closest` (perf); the sanitized `e2e.cli_run`, which runs it three
+times, took 18 min. Once a pass is proven over the limit, its bound is now sought to within
+5% of its excess over the limit: the pass fails whatever the precision, and the bound only sets
+the next size and says whether a pass got closer. The rounded box at `--scale 0.3` takes
+6–7 s, with the same 4 refinements (target edge 0.1438 → 0.1455, 628 → 582 quads, Hausdorff
+0.81% → 0.85%). Precision relative to the distance itself (5% of it) was tried first and
+dropped: rockerarm's pass is 1.16 times over the limit, its refined size moved by 0.7% and the
+side lengths gave 18,500 quads instead of 15,351. With the excess, a pass a little over the
+limit is measured as before. Shared meshes, same machine and day: the same quads and figures
+everywhere except camelhead (its refined size: 27,014 → 27,680 quads, misaligned 24.3% →
+24.5%); times within this machine's run-to-run noise. A unit test checks the bound against a
+dense reference on a bump (upper bound, within 5% of the excess) and that a failed pass is found
+with few samples (the old measure: 273,526 far samples there).
+
 ### Kept normals, downward branching and a stall limit for the side lengths (issue 21 part 4, tenth session, 2026-12-04)
 
 Profiled on the dragon (`perf`, frame pointers): the quad stage was 43% of the run, its three
