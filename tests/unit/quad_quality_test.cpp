@@ -1,4 +1,5 @@
 #include "metrics/quad_quality.h"
+#include "test_support.h"
 
 #include "util/math_constants.h"
 
@@ -182,19 +183,8 @@ TEST(QuadQuality, DeviationBoundIsAnUpperBoundAndTightWhereAPassFails) {
   const std::vector<std::array<int, 3>> quadTris = quadTriangles(quads);
   const ClosestPointIndex quadIndex(quads.positions, quadTris);
   const double spacing = 0.005;
-  auto farthest = [&](const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T, const ClosestPointIndex& other) {
-    double worst = 0;
-    for (const auto& t : T) {
-      const Vec3 &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
-      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-      const int m = std::max(1, int(std::ceil(longest / spacing)));
-      for (int i = 0; i <= m; ++i)
-        for (int k = 0; i + k <= m; ++k)
-          worst = std::max(worst, other.closest(a + (b - a) * (double(i) / m) + (c - a) * (double(k) / m)).distance);
-    }
-    return worst;
-  };
-  const double dense = std::max(farthest(quads.positions, quadTris, surface), farthest(positions, faces, quadIndex));
+  const double dense = std::max(test::sampledOneWayDistance(quads.positions, quadTris, surface, spacing),
+                                test::sampledOneWayDistance(positions, faces, quadIndex, spacing));
   ASSERT_GT(dense, 0.09);
   ASSERT_LT(dense, 0.1 + 1e-9);
 

@@ -813,20 +813,8 @@ TEST(Quadrangulation, ExitMeansTheDistanceBoundHoldsOnFandisk) {
       quadTris.push_back({f[0], f[1], f[3]}), quadTris.push_back({f[1], f[2], f[3]});
   }
   const ClosestPointIndex quads(r.mesh.positions, quadTris);
-  auto farthest = [&](const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T, const ClosestPointIndex& other) {
-    double worst = 0;
-    for (const auto& t : T) {
-      const Vec3 &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
-      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-      const int n = std::max(1, int(std::ceil(longest / spacing)));
-      for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j)
-          worst = std::max(worst, other.closest(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)).distance);
-    }
-    return worst;
-  };
-  const double dense = std::max(farthest(r.mesh.positions, quadTris, surface),
-                                farthest(q->mesh.positions(), q->mesh.faces(), quads));
+  const double dense = std::max(test::sampledOneWayDistance(r.mesh.positions, quadTris, surface, spacing),
+                                test::sampledOneWayDistance(q->mesh.positions(), q->mesh.faces(), quads, spacing));
   std::cout << "fandisk: dense two-sided distance " << 100 * dense / diagonal << "% of the diagonal, stage bound "
             << 100 * r.deviationBound / diagonal << "%" << std::endl;
   EXPECT_LE(dense, limit);

@@ -5,15 +5,34 @@
 
 #include "field/cross_field.h"
 #include "field/field_io.h"
+#include "mesh/closest_point_index.h"
 #include "mesh/mesh_io.h"
 #include "mesh/surface_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <string>
 
 namespace fcql::test {
+
+/// The largest distance from the triangles T over P to `other`, sampled on a barycentric grid
+/// of each triangle at most `spacing` apart (inside and along the edges): a dense reference
+/// for the distance measure, a lower bound on the true one-way distance.
+inline double sampledOneWayDistance(const std::vector<Vec3>& P, const std::vector<std::array<int, 3>>& T,
+                                    const ClosestPointIndex& other, double spacing) {
+  double worst = 0;
+  for (const auto& t : T) {
+    const Vec3 &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int n = std::max(1, int(std::ceil(longest / spacing)));
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j)
+        worst = std::max(worst, other.closest(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)).distance);
+  }
+  return worst;
+}
 
 /// Absolute path of a file in ../shared/data/meshes, or "" if the shared folder is absent.
 inline std::string sharedMesh(const std::string& name) {
