@@ -499,6 +499,37 @@ TEST(Quadrangulation, SharedMeshesGiveCloseManifoldQuadMeshes) {
   checkQuadMesh(*k, quadrangulateWithDefaults(*k, 0.02), "kitten");
 }
 
+TEST(Quadrangulation, PatchesWhereTheFieldAlignedQuadsStrayAreMappedWithMeanValueCoordinatesAlone) {
+  // The eight's field-aligned quads at 2% of the diagonal stray past a bound of 0.5% (its
+  // patches' grids, stretched along the field, cut across the holes' curvature). The patches
+  // near the points found too far are mapped with mean-value coordinates, the others keep
+  // the field, and the mesh meets the bound at the asked size: no refinement, not the whole
+  // stage without the field.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(mesh, field, "eight");
+  auto q = layoutOf(mesh, &field);
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
+  options.ilpTimeLimit = 30;
+  options.maxDeviation = 0.005;
+  options.fieldDirections = field.u;
+  const QuadrangulationResult r = quadrangulate(q->patches, options);
+  EXPECT_GT(r.boundMeanValuePatches, 0) << "the eight's field-aligned quads now meet 0.5%: pick another case";
+  EXPECT_LT(r.boundMeanValuePatches, q->patches.numPatches());
+  ASSERT_EQ(int(r.meanValuePatches.size()), q->patches.numPatches());
+  EXPECT_EQ(std::count(r.meanValuePatches.begin(), r.meanValuePatches.end(), char(1)), r.boundMeanValuePatches);
+  EXPECT_FALSE(r.boundWithoutField);
+  EXPECT_EQ(r.refinements, 0);
+  EXPECT_GT(r.mesh.alignedPatches, 0);
+  EXPECT_LE(r.deviationBound, r.deviationLimit);
+  // Independently of the stage's own measure: dense samples both ways.
+  const ClosestPointIndex index(q->mesh);
+  const QuadQuality quality = measureQuadQuality(r.mesh, q->mesh, q->field, index);
+  EXPECT_LE(quality.hausdorffRelative, 0.005);
+  EXPECT_EQ(quality.invertedQuads, 0);
+  EXPECT_TRUE(r.report.manifold);
+  EXPECT_EQ(r.report.genus, q->mesh.genus());
+}
+
 TEST(Quadrangulation, ZeroChainOfTheBunnyIsResolved) {
   FCQL_REQUIRE_SHARED(bunny, "bunny.obj");
   auto q = layoutOf(loadMesh(bunny), nullptr, withTJunctions());

@@ -50,7 +50,8 @@ void describe(const QuadStageResult& s, const QuadrangulationOptions& options, i
   if (q.blendedPatches + q.meanValuePatches > 0)
     log.info("Field-aligned maps: " + std::to_string(q.alignedPatches) + " patches aligned, " +
              std::to_string(q.blendedPatches) + " blended towards mean-value coordinates and " +
-             std::to_string(q.meanValuePatches) + " left to them, where the aligned map folded");
+             std::to_string(q.meanValuePatches) + " left to them, where the aligned map folded" +
+             (r.boundMeanValuePatches > 0 ? " or strayed from the surface" : ""));
   if (q.outsidePoints > 0)
     log.warning(std::to_string(q.outsidePoints) +
                 " grid points fell outside their patch map (degenerate patches): their quads are distorted");
@@ -112,6 +113,7 @@ void record(const QuadStageResult& s, const PipelineParameters& p, Figures& f) {
   f.set("quad.field_folds_resampled", r.foldsResampled);
   f.set("quad.field_folds_without_field", r.foldsWithoutField);
   f.set("quad.field_bound_without_field", r.boundWithoutField);
+  f.set("quad.field_bound_mean_value_patches", r.boundMeanValuePatches);
   f.set("quad.field_aligned_patches", q.alignedPatches);
   f.set("quad.field_blended_patches", q.blendedPatches);
   f.set("quad.field_mean_value_patches", q.meanValuePatches);

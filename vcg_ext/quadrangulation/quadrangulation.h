@@ -39,9 +39,15 @@ struct QuadrangulationResult {
   /// ... or, still folded, the pass (or, last, the whole stage) made without the field folded
   /// fewer and was kept.
   bool foldsWithoutField = false;
-  /// The field-aligned stage missed maxDeviation even after its refinements; the whole stage
-  /// without the field (mean-value maps) met it and was kept.
+  /// The field-aligned pass missed maxDeviation, also with mean-value maps in the patches near
+  /// where it strayed (meanValuePatches) and after its refinements; the whole stage without
+  /// the field (mean-value maps) met it and was kept.
   bool boundWithoutField = false;
+  /// Layout patches mapped with mean-value coordinates inside instead of the field (their
+  /// sides still sampled with it), because the field-aligned quads near them strayed farther
+  /// than maxDeviation from the surface; empty if none.
+  std::vector<char> meanValuePatches;
+  int boundMeanValuePatches = 0;  ///< how many are marked in meanValuePatches
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
   /// than maxDeviation from the surface (restoreSampledPositions).
