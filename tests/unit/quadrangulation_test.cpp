@@ -255,6 +255,29 @@ TEST(Quadrangulation, SmoothingKeepsBordersAndImprovesTheWorstQuad) {
   }, std::invalid_argument);
 }
 
+TEST(Quadrangulation, SmoothingGivesTheSameQuadsOnAnyNumberOfThreads) {
+  // The fandisk's creases make the untangling run twice (without and with snapping to them),
+  // side by side on two threads; the smoothing steps share the vertices among the threads.
+  // Neither may change the result.
+  FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
+  auto q = layoutOf(loadMesh(fandisk));
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
+  options.maxDeviation = 0;
+  options.fieldDirections = q->field.u;
+  options.smoothing.threads = 1;
+  const QuadrangulationResult one = quadrangulate(q->patches, options);
+  options.smoothing.threads = 2;
+  const QuadrangulationResult two = quadrangulate(q->patches, options);
+  ASSERT_EQ(one.mesh.quads, two.mesh.quads);
+  ASSERT_EQ(one.mesh.positions.size(), two.mesh.positions.size());
+  for (std::size_t v = 0; v < one.mesh.positions.size(); ++v)
+    ASSERT_EQ(one.mesh.positions[v], two.mesh.positions[v]) << "vertex " << v;
+  EXPECT_EQ(one.smoothing.snappedMoves, two.smoothing.snappedMoves);
+  EXPECT_EQ(one.smoothing.untangledMoves, two.smoothing.untangledMoves);
+  EXPECT_GT(one.smoothing.snappedMoves, 0) << "no crease was snapped to: the case no longer tests the second untangling";
+}
+
 TEST(Quadrangulation, CoarseTargetsAreRefinedUntilCloseToTheSurface) {
   // Quads of a third of the diagonal on a rounded box cut its rounded edges by far more than
   // 1%: the stage samples again with smaller quads until within the bound, and says so.

@@ -88,8 +88,8 @@ std::vector<S> makeTable() {
                    "Auxiliary points are inserted on every mesh edge until the angle it subtends at the opposite "
                    "vertex is below phi: smaller values give a denser graph G (more memory, straighter paths)."));
   t.push_back(integer("threads", "threads", T, &P::threads, 0, 0, 1024, "", "Threads", "threads",
-                      "Threads that trace the separatrices; 0: all hardware threads. The result does not depend "
-                      "on it."));
+                      "Threads that trace the separatrices and smooth the quads; 0: all hardware threads. The "
+                      "result does not depend on it."));
   // ---- Layout
   t.push_back(real("ilp_time_limit", "ilp-time-limit", L, &P::ilpTimeLimit, 60, 1, 86400, "seconds",
                    "ILP time limit (seconds)", "ILP time limit in seconds",

@@ -25,6 +25,7 @@ QuadrangulationOptions quadOptions(const SurfaceMesh& mesh, const CrossField& fi
   options.ilpTimeLimit = p.ilpTimeLimit;
   options.smoothing.iterations = p.smooth;
   options.smoothing.sharpAngleDeg = p.sharpAngleDeg;
+  options.smoothing.threads = p.threads;
   options.maxDeviation = p.maxDeviation;
   options.maxQuads = kMaxQuads;
   if (p.param == "field") options.fieldDirections = field.u;

@@ -169,7 +169,15 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
   for (std::size_t i = 0; i < m; ++i) edge[i] = meanEdge(mesh, jacobian, part.vertices[i]);
   std::vector<Vec3> direction(m), start(m);
   double energy = total(), alpha = 0.25;
+  // Stopped once ten steps gain less than 1% of the energy: the descent then crawls (it is
+  // judged by the folds it removes, not by its energy), and a part that does not unfold is
+  // tried again with more rings.
+  double tenStepsAgo = energy;
   for (int it = 0; it < kIterations && energy > 1e-12 && alpha > 1e-4; ++it) {
+    if (it > 0 && it % 10 == 0) {
+      if (energy > 0.99 * tenStepsAgo) break;
+      tenStepsAgo = energy;
+    }
     double largest = 0;  // the largest move, in edge lengths, at alpha = 1
     for (std::size_t i = 0; i < m; ++i) {
       const int v = part.vertices[i];

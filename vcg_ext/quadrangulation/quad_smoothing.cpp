@@ -4,6 +4,7 @@
 
 #include "mesh/closest_point_index.h"
 #include "mesh/point_buckets.h"
+#include "util/worker_threads.h"
 #include "metrics/quad_quality.h"
 #include "util/math_constants.h"
 
@@ -249,13 +250,21 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
 /// the quad's own two directions (midpoints of opposite edges), extents the quad's along them.
 /// The field and normal of a quad are those of the surface triangle nearest to its centre.
 void alignedTargets(const QuadMesh& quads, const ClosestPointIndex& index, const std::vector<Vec3>& normals,
-                    const std::vector<Vec3>& directions, std::vector<Vec3>& sum, std::vector<int>& count) {
+                    const std::vector<Vec3>& directions, int threads, std::vector<Vec3>& sum, std::vector<int>& count) {
   std::fill(sum.begin(), sum.end(), Vec3::Zero());
   std::fill(count.begin(), count.end(), 0);
   const auto& P = quads.positions;
-  for (const auto& f : quads.quads) {
-    const Vec3 centre = (P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4;
-    const int t = index.closest(centre).triangle;
+  auto centreOf = [&](const std::array<int, 4>& f) { return Vec3((P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4); };
+  // The nearest triangles on the worker threads, the sums in order.
+  std::vector<int> nearest(quads.quads.size());
+  runOnWorkerThreads(threads, [&](int w) {
+    for (std::size_t q = std::size_t(w); q < quads.quads.size(); q += std::size_t(threads))
+      nearest[q] = index.closest(centreOf(quads.quads[q])).triangle;
+  });
+  for (std::size_t q = 0; q < quads.quads.size(); ++q) {
+    const auto& f = quads.quads[q];
+    const Vec3 centre = centreOf(f);
+    const int t = nearest[q];
     const Vec3& n = normals[t];
     Vec3 d = directions[t] - n * n.dot(directions[t]);
     if (!(d.norm() > 0) || n.isZero()) continue;
@@ -286,6 +295,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   if (options.iterations == 0 || quads.numQuads() == 0) return report;
 
   const ClosestPointIndex index(surfacePositions, surfaceTriangles);
+  const int threads = workerThreadCount(options.threads, quads.numVertices() / 2000 + 1);
   std::vector<Vec3> normals(surfaceTriangles.size(), Vec3::Zero());
   double longestEdge2 = 0;
   for (size_t t = 0; t < surfaceTriangles.size(); ++t) {
@@ -403,35 +413,41 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
     jacobian.all(before);
-    if (aligned) alignedTargets(quads, index, normals, options.triangleDirections, alignedSum, alignedCount);
-    for (int v = 0; v < nv; ++v) {
-      next[v] = previous[v];
-      if (fixed[v] || neighbours[v].empty()) continue;
-      Vec3 average = Vec3::Zero();
-      for (int w : neighbours[v]) average += previous[w];
-      average /= double(neighbours[v].size());
-      // Around a quad already folded or nearly flat, the neighbours' average alone, which
-      // unfolds; elsewhere the aligned rectangles' corners.
-      bool good = true;
-      for (int r : jacobian.quadsAround(v)) good = good && before[r] > kMinScaledJacobian;
-      if (aligned && good && alignedCount[v] > 0) average = alignedSum[v] / double(alignedCount[v]);
-      const Vec3& n = normals[index.closest(previous[v]).triangle];
-      Vec3 move = (average - previous[v]) * options.step;
-      move -= n * n.dot(move);
-      next[v] = index.closest(previous[v] + move).point;
-      if (features) {
-        // A vertex close to a feature line (within kSnapShare of its mean edge length) goes
-        // onto it, so the quads follow creases instead of cutting across them.
-        double edge = 0;
-        for (int w : neighbours[v]) edge += (previous[w] - previous[v]).norm();
-        edge /= double(neighbours[v].size());
-        const ClosestPoint onFeature = features->closest(next[v]);
-        if (onFeature.distance < kSnapShare * edge) {
-          next[v] = onFeature.point;
-          ++report.snappedMoves;
+    if (aligned) alignedTargets(quads, index, normals, options.triangleDirections, threads, alignedSum, alignedCount);
+    // Each vertex's move depends on the previous positions only: the vertices are shared
+    // among the worker threads (interleaved), the result the same for any number of them.
+    std::vector<int> snapped(threads, 0);
+    runOnWorkerThreads(threads, [&](int worker) {
+      for (int v = worker; v < nv; v += threads) {
+        next[v] = previous[v];
+        if (fixed[v] || neighbours[v].empty()) continue;
+        Vec3 average = Vec3::Zero();
+        for (int w : neighbours[v]) average += previous[w];
+        average /= double(neighbours[v].size());
+        // Around a quad already folded or nearly flat, the neighbours' average alone, which
+        // unfolds; elsewhere the aligned rectangles' corners.
+        bool good = true;
+        for (int r : jacobian.quadsAround(v)) good = good && before[r] > kMinScaledJacobian;
+        if (aligned && good && alignedCount[v] > 0) average = alignedSum[v] / double(alignedCount[v]);
+        const Vec3& n = normals[index.closest(previous[v]).triangle];
+        Vec3 move = (average - previous[v]) * options.step;
+        move -= n * n.dot(move);
+        next[v] = index.closest(previous[v] + move).point;
+        if (features) {
+          // A vertex close to a feature line (within kSnapShare of its mean edge length) goes
+          // onto it, so the quads follow creases instead of cutting across them.
+          double edge = 0;
+          for (int w : neighbours[v]) edge += (previous[w] - previous[v]).norm();
+          edge /= double(neighbours[v].size());
+          const ClosestPoint onFeature = features->closest(next[v]);
+          if (onFeature.distance < kSnapShare * edge) {
+            next[v] = onFeature.point;
+            ++snapped[worker];
+          }
         }
       }
-    }
+    });
+    for (int n : snapped) report.snappedMoves += n;
     quads.positions = next;
     // The quads to check: all at first, then those depending on a vertex just put back.
     std::vector<int> check, reverted;
@@ -464,34 +480,48 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   // feature line among each vertex's candidates. Which local optimum the greedy moves reach
   // depends on that choice (a grid line beside a crease unfolds only once on it; elsewhere the
   // snap can trap a vertex), so the result with fewer folded quads is kept (the first on a tie).
+  // Each is untangled first against the input surface's normal at each quad (the mean of the
+  // normals of the surface triangles its corners lie on), which folded quads do not disturb,
+  // then against the quads' own. With a feature to snap to and two threads, the second runs
+  // beside the first, on a copy of the mesh; else only if the first left folds.
   const std::vector<Vec3> smoothed = quads.positions;
-  std::vector<Vec3> kept;
-  int keptFolds = std::numeric_limits<int>::max();
-  SmoothingReport keptReport;
-  for (bool snap : {false, true}) {
-    SmoothingReport tried = report;
-    quads.positions = smoothed;
-    {
-      // Against the input surface's normal at each quad (the mean of the normals of the surface
-      // triangles its corners lie on), which folded quads do not disturb.
-      std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
-      std::vector<Vec3> at(nv, Vec3::Zero());
-      for (int v = 0; v < nv; ++v)
+  std::vector<Vec3> reference(quads.numQuads(), Vec3::Zero());
+  {
+    std::vector<Vec3> at(nv, Vec3::Zero());
+    runOnWorkerThreads(threads, [&](int worker) {
+      for (int v = worker; v < nv; v += threads)
         if (!neighbours[v].empty()) at[v] = normals[index.closest(quads.positions[v]).triangle];
-      for (int q = 0; q < quads.numQuads(); ++q) {
-        for (int v : quads.quads[q]) reference[q] += at[v];
-        if (reference[q].norm() > 0) reference[q].normalize();
-      }
-      untangle(quads, index, features.get(), slidable, fixed, neighbours, QuadJacobian(quads, std::move(reference)), tried,
-               snap);
+    });
+    for (int q = 0; q < quads.numQuads(); ++q) {
+      for (int v : quads.quads[q]) reference[q] += at[v];
+      if (reference[q].norm() > 0) reference[q].normalize();
     }
-    untangle(quads, index, features.get(), slidable, fixed, neighbours, jacobian, tried, snap);
-    jacobian.all(after);
-    const int folds = int(std::count_if(after.begin(), after.end(), [](double j) { return j <= 0; }));
-    if (folds < keptFolds) keptFolds = folds, kept = quads.positions, keptReport = tried;
-    if (keptFolds == 0 || !features) break;  // nothing to gain, or no feature to snap to
   }
-  quads.positions = std::move(kept);
+  auto untangleBoth = [&](QuadMesh& mesh, const QuadJacobian& own, bool snap, SmoothingReport& tried) {
+    untangle(mesh, index, features.get(), slidable, fixed, neighbours, QuadJacobian(mesh, reference), tried, snap);
+    untangle(mesh, index, features.get(), slidable, fixed, neighbours, own, tried, snap);
+    std::vector<double> j;
+    own.all(j);
+    return int(std::count_if(j.begin(), j.end(), [](double x) { return x <= 0; }));
+  };
+  SmoothingReport keptReport = report, snappedReport = report;
+  QuadMesh snapped;
+  int keptFolds = 0, snappedFolds = std::numeric_limits<int>::max();
+  if (features && threads >= 2) {
+    snapped = quads;
+    runOnWorkerThreads(2, [&](int worker) {
+      if (worker == 0) keptFolds = untangleBoth(quads, jacobian, false, keptReport);
+      else snappedFolds = untangleBoth(snapped, QuadJacobian(snapped), true, snappedReport);
+    });
+  } else {
+    keptFolds = untangleBoth(quads, jacobian, false, keptReport);
+    if (keptFolds > 0 && features) {
+      snapped = quads;
+      snapped.positions = smoothed;
+      snappedFolds = untangleBoth(snapped, QuadJacobian(snapped), true, snappedReport);
+    }
+  }
+  if (keptFolds > 0 && snappedFolds < keptFolds) quads.positions = std::move(snapped.positions), keptReport = snappedReport;
   report = keptReport;
   report.repairedFolds = repairFolds(quads, index, features.get(), normals, repairMoves, jacobian);
   return report;

@@ -46,6 +46,9 @@ struct SmoothingOptions {
   /// field that best fit its quads (same centre, extents along the field's two directions)
   /// instead of its neighbours' average: the quads turn to the field, across patch sides too.
   std::vector<Vec3> triangleDirections;
+  /// Worker threads for the per-vertex moves (0: all hardware threads); the result does not
+  /// depend on it.
+  int threads = 0;
 };
 
 struct SmoothingReport {
