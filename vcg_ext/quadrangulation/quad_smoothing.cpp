@@ -97,6 +97,20 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
   std::vector<Vec3> candidates;
   std::vector<int> bad, corners;
   double lastTotal = 0;
+  // A vertex tried without moving is tried again only once a vertex its quads' figures depend
+  // on (the corners of the quads around the corners of its dependents, which give their
+  // normals) has moved: the same positions give the same search, so skipping it changes
+  // nothing. Clock ticks count the moves.
+  std::vector<long> movedAt(quads.positions.size(), 0), stillAt(quads.positions.size(), -1);
+  long clock = 0;
+  auto unchangedSince = [&](long t) {
+    for (int r : around)
+      for (int c : quads.quads[r])
+        for (int s : jacobian.quadsAround(c))
+          for (int w : quads.quads[s])
+            if (movedAt[w] > t) return false;
+    return true;
+  };
   for (int sweep = 0; sweep < 20; ++sweep) {
     bad.clear();
     jacobian.all(now);
@@ -127,6 +141,7 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
       const int v = corners[i];
       if (!movable(v)) continue;
       jacobian.dependents(v, around);
+      if (stillAt[v] >= 0 && unchangedSince(stillAt[v])) continue;
       const Vec3 original = quads.positions[v];
       jacobian.values(around, before);
       double best = 0;
@@ -179,7 +194,8 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
       }
       quads.positions[v] = bestPosition;
       jacobian.moved(v);
-      if (bestPosition != original) changed = true, ++report.untangledMoves;
+      if (bestPosition != original) changed = true, ++report.untangledMoves, movedAt[v] = ++clock, stillAt[v] = -1;
+      else stillAt[v] = clock;
     }
     jacobian.untrack();
     if (!changed) break;
