@@ -443,6 +443,42 @@ mesh at the 20% limit; elsewhere CPU time changes by −13% to +8%.
 
 ## Speed: profile and changes
 
+### Mean-value maps only where the field-aligned quads stray; smoothing on two threads (issue 21, twelfth session, 2026-12-05)
+
+- **The distance bound, patch by patch**: where the field-aligned pass missed the bound, the
+  whole stage without the field was kept (the dragon at 2%, the eight at `--max-deviation
+  0.005`), so not one quad followed the field any more. Now the patches nearest the points
+  found too far (the nearest quad of each, on either surface) are mapped with mean-value
+  coordinates inside and smoothed plainly, their sides sampled as with the field so the other
+  patches keep their grids; up to three rounds, and only then the stage without the field.
+  The dragon keeps the field in all but 70 of its 6,605 patches, the eight (at 0.005) in 12 of
+  88. Fold reduction (plain smoothing, mean-value maps in the folded patches, the pass without
+  the field) is tried whatever the number of folds; it stopped at 16 before, and the dragon's
+  21 then went straight to the whole stage without the field, which costs more.
+- **Speed**: the smoothing's per-vertex moves, the aligned targets' nearest triangles and the
+  reference normals run on the worker threads (`--threads`; the same quads on 1 and 2 threads,
+  unit test on the fandisk), the untangling with snapping to creases runs beside the one without
+  on a copy of the mesh, a vertex the untangling tried without moving is tried again only after
+  a vertex its figures depend on moved (18,000 of 83,000 tries on the dragon; the same quads,
+  bit for bit), and a fold-repair descent stops once ten steps gain less than 1% (fold repair
+  1.6–2.8 s → 1.0–1.6 s a pass on the dragon).
+
+Base (afe900b) and this session's code, alternating, the same machine and hour (seconds):
+
+| run | quad stage base → now | whole run base → now | quads | folded | misaligned quads / faces | SJ min |
+|---|---:|---:|---|---|---|---|
+| dragon (two runs each) | 19.0, 19.5 → 20.6, 26.8 | 38.4, 36.1 → 36.1, 45.1 | 67733 both | 13 → 12 | 37.0% → 36.6% / 19.4% → 19.5% | −0.49 → −0.62 |
+| eight, `--max-deviation 0.005` | 1.17 → 0.78 | 2.65 → 2.04 | 7092 both | 0 → 0 | 22.6% → 19.7% / 6.7% → 4.9% | 0.45 → 0.35 |
+
+The dragon's quad stage is not faster: it now runs four smoothing passes where it ran two (the
+field pass; the pass with mean-value maps near its far points, which meets the bound; the plain
+smoothing of those samples, which folds 12 quads instead of 21 and is kept; the stage without
+the field, run to check it does not fold fewer: 13), each about a third cheaper. Its alignment
+gains little (its 795 singularities leave patches of about ten quads), the eight's a lot. The
+issue's 3 s is not met. At half the size the dragon folds 18 quads (20 before). The other
+shared meshes' quads are unchanged except camelhead's (the fold repair's earlier stop changes
+its refined pass: 27,680 → 29,176 quads, misaligned 24.5% → 25.4%, no folds either way).
+
 ### A coarser measure of passes that are over the distance bound (issue 21, eleventh session, 2026-12-04)
 
 The distance measure cut every triangle whose bound was above the limit down to a cover radius
