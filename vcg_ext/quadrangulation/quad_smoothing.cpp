@@ -3,7 +3,6 @@
 #include "quadrangulation/fold_repair.h"
 
 #include "mesh/closest_point_index.h"
-#include "mesh/point_buckets.h"
 #include "util/worker_threads.h"
 #include "metrics/quad_quality.h"
 #include "util/math_constants.h"
@@ -543,14 +542,42 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   return report;
 }
 
+namespace {
+
+/// The distance from p (in cell c of `cells`, a grid of cell `radius` over the points `far`)
+/// to the nearest far point, looked for in the 27 cells around c, or any distance up to
+/// radius / 2 (all the same to the caller, which returns such a vertex fully), so that the
+/// search ends at the first such point: a pass far from the bound has millions of far points.
+double nearestFarPoint(const std::map<std::array<long long, 3>, std::vector<int>>& cells, const std::vector<Vec3>& far,
+                       const Vec3& p, const std::array<long long, 3>& c, double radius) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (long long dx : {0, -1, 1})
+    for (long long dy : {0, -1, 1})
+      for (long long dz : {0, -1, 1}) {
+        auto it = cells.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
+        if (it == cells.end()) continue;
+        for (int i : it->second) {
+          nearest = std::min(nearest, (far[i] - p).norm());
+          if (nearest <= radius / 2) return nearest;
+        }
+      }
+  return nearest;
+}
+
+}  // namespace
+
 int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, const std::vector<Vec3>& far,
                             double radius) {
   const int nv = quads.numVertices();
   if (int(sampled.size()) != nv) throw std::invalid_argument("restoreSampledPositions: one sampled position per vertex");
   if (far.empty() || !(radius > 0)) return 0;
-  // The far points bucketed on a grid of cell `radius`; the search stops at any within
-  // radius / 2 (the vertex then goes back fully): a pass far from the bound has millions.
-  const PointBuckets buckets(far, radius);
+  // Buckets of the far points on a grid of cell `radius`: each vertex looks at 27 cells.
+  auto cellOf = [&](const Vec3& p) {
+    return std::array<long long, 3>{{(long long)std::floor(p.x() / radius), (long long)std::floor(p.y() / radius),
+                                     (long long)std::floor(p.z() / radius)}};
+  };
+  std::map<std::array<long long, 3>, std::vector<int>> cells;
+  for (int i = 0; i < int(far.size()); ++i) cells[cellOf(far[i])].push_back(i);
   const QuadJacobian jacobian(quads);
   std::vector<int> around;
   std::vector<double> before, after;
@@ -560,7 +587,7 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   for (int v = 0; v < nv; ++v) {
     if (jacobian.quadsAround(v).empty() || quads.positions[v] == sampled[v]) continue;
     const Vec3 smoothed = quads.positions[v];
-    const double nearest = buckets.nearest(smoothed, radius / 2);
+    const double nearest = nearestFarPoint(cells, far, smoothed, cellOf(smoothed), radius);
     if (!(nearest < radius)) continue;
     const double share = std::min(1.0, 2.0 * (1.0 - nearest / radius));
     jacobian.dependents(v, around);
