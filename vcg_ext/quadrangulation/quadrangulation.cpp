@@ -331,8 +331,10 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
     cache.measured.emplace(key, q);
     return q;
   };
+  // The points too far are wanted only with a field (for the patch-wise fallback below): the
+  // stage without it may find its pass measured already, and need not measure it again.
   std::vector<Vec3> far;
-  QuadrangulationResult r = measuredPass(options, &far);
+  QuadrangulationResult r = measuredPass(options, options.fieldDirections.empty() ? nullptr : &far);
   if (r.mesh.numQuads() == 0) return r;  // nothing to measure
   // Where the field-aligned maps miss the bound (patches stretched along the field where the
   // surface curves across them), first only the patches near the points found too far are
