@@ -45,6 +45,7 @@
 #include "field/field_generation.h"
 
 #include "field/curvature.h"
+#include "field/field_analysis.h"
 #include "util/math_constants.h"
 
 #include <Eigen/Sparse>
@@ -84,6 +85,9 @@ constexpr double kSupernodalSwitch = 120;
 constexpr double kMaxFeatureTurnDeg = 30.0;
 constexpr int kMinFeatureEdges = 4;
 constexpr double kMinFeatureLength = 0.1;
+/// Re-solves that keep a quarter turn of curvature at vertices left with index +1/2 or more
+/// (see generateCrossField).
+constexpr int kConeRounds = 2;
 
 double angleInFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
   return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
@@ -299,9 +303,12 @@ std::vector<Complex> curvatureTargets(const SurfaceMesh& mesh, const std::vector
 /// defect diffused over `length`, instead of its own: the smoothest field then places its
 /// singularities where the surface is curved at that scale, not at every bump of noise.
 /// ρ = w_e (ψ_q − ψ_p) for the edge p→q of f, L ψ = K̃ − K on the interior vertices (ψ = 0 on
-/// border and feature vertices, whose holonomy is left alone).
+/// border and feature vertices, whose holonomy is left alone). A vertex marked in
+/// `quarterCones` keeps a quarter turn of its own curvature undiffused (only the rest is
+/// spread), so that the field turns by exactly a quarter around it (index +1/4).
 std::vector<std::array<double, 3>> connectionCorrection(const SurfaceMesh& mesh, double length,
-                                                        const std::vector<char>& creases) {
+                                                        const std::vector<char>& creases,
+                                                        const std::vector<char>& quarterCones) {
   const int nf = mesh.numFaces(), nv = mesh.numVertices();
   std::vector<std::array<double, 3>> rho(nf, {0.0, 0.0, 0.0});
   if (!(length > 0)) return rho;
@@ -329,6 +336,7 @@ std::vector<std::array<double, 3>> connectionCorrection(const SurfaceMesh& mesh,
   for (int v = 0; v < nv; ++v)
     if (!fixedVertex[v] && !mesh.star(v).empty()) index[v] = n++;
   if (n == 0) return rho;
+  auto cone = [&](int v) { return quarterCones[v] ? kPi / 2 : 0.0; };
   // Diffuse the curvature density κ = K / A: (M + t L) κ̃ = K, K̃ = M κ̃ (the total is kept).
   std::vector<Eigen::Triplet<Complex>> lower;
   Eigen::VectorXd lapDiagonal = Eigen::VectorXd::Zero(n);
@@ -350,7 +358,7 @@ std::vector<std::array<double, 3>> connectionCorrection(const SurfaceMesh& mesh,
   for (int v = 0; v < nv; ++v)
     if (index[v] >= 0) {
       diagonal[index[v]] = vertexArea[v] + t * lapDiagonal[index[v]];
-      rhs[index[v]] = defect[v];
+      rhs[index[v]] = defect[v] - cone(v);
     }
   FieldFactorisation diffusion;
   diffusion.factorise(lowerTriangle(n, scaled, diagonal));
@@ -363,7 +371,7 @@ std::vector<std::array<double, 3>> connectionCorrection(const SurfaceMesh& mesh,
   for (int v = 0; v < nv; ++v)
     if (index[v] >= 0) {
       lapDiag[index[v]] += 1e-9 * meanDiagonal;
-      rhs[index[v]] = vertexArea[v] * kappa[index[v]].real() - defect[v];
+      rhs[index[v]] = vertexArea[v] * kappa[index[v]].real() + cone(v) - defect[v];
     }
   FieldFactorisation poisson;
   poisson.factorise(lowerTriangle(n, lower, lapDiag));
@@ -380,7 +388,8 @@ std::vector<std::array<double, 3>> connectionCorrection(const SurfaceMesh& mesh,
 
 /// Solves for the free faces; z holds the fixed values on entry and every value on return.
 void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, int n, double lambda,
-                    double curvatureLength, const std::vector<char>& creases, std::vector<Complex>& z) {
+                    double curvatureLength, const std::vector<char>& creases,
+                    const std::vector<char>& quarterCones, std::vector<Complex>& z) {
   const int nf = mesh.numFaces();
   double totalArea = 0;
   for (int f = 0; f < nf; ++f) totalArea += mesh.faceArea(f);
@@ -393,7 +402,7 @@ void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, in
   offDiagonal.reserve(std::size_t(n) * 3 / 2 + 16);
   Eigen::VectorXd smoothDiagonal = Eigen::VectorXd::Zero(n);
   Eigen::VectorXcd fixedRhs = Eigen::VectorXcd::Zero(n);
-  const std::vector<std::array<double, 3>> rho = connectionCorrection(mesh, curvatureLength, creases);
+  const std::vector<std::array<double, 3>> rho = connectionCorrection(mesh, curvatureLength, creases, quarterCones);
   addSmoothness(mesh, unknown, z, rho, smoothDiagonal, offDiagonal, fixedRhs);
   // Mean diagonal of the smoothness term (edge weights are dimensionless, ~1), a reference for
   // the tiny regularisations below; 1 if no free face has a neighbour.
@@ -405,10 +414,16 @@ void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, in
   std::vector<Complex> target = lambda > 0 ? curvatureTargets(mesh, creases) : std::vector<Complex>(nf, 0.0);
   Eigen::VectorXd diagonal = smoothDiagonal;
   Eigen::VectorXcd rhs = fixedRhs;
+  // The faces around a quarter cone follow the field the cone makes, not the curvature there
+  // (a cone's principal directions turn around its tip, which would ask for more than a quarter).
+  std::vector<char> aroundCone(nf, 0);
+  for (int v = 0; v < mesh.numVertices(); ++v)
+    if (quarterCones[v])
+      for (const auto& corner : mesh.star(v)) aroundCone[corner.face] = 1;
   for (int f = 0; f < nf; ++f) {
     int a = unknown[f];
     if (a < 0) continue;
-    double w = lambda * areaWeight[a];
+    double w = aroundCone[f] ? 0.0 : lambda * areaWeight[a];
     diagonal[a] += w + 1e-12 * meanDiagonal;
     rhs[a] += w * target[f];
   }
@@ -475,6 +490,24 @@ void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, in
     if (unknown[f] >= 0) z[f] = x[unknown[f]];
 }
 
+CrossField fieldFromValues(const SurfaceMesh& mesh, const std::vector<Complex>& z) {
+  CrossField field;
+  field.u.resize(mesh.numFaces());
+  for (int f = 0; f < mesh.numFaces(); ++f) {
+    double theta = std::abs(z[f]) > 0 ? std::arg(z[f]) / 4 : 0.0;
+    field.u[f] = std::cos(theta) * mesh.faceFrameX(f) + std::sin(theta) * mesh.faceFrameY(f);
+  }
+  return field;
+}
+
+/// Interior singular vertices of index +1/2 or more.
+std::vector<int> highIndexVertices(const SurfaceMesh& mesh, const CrossField& field) {
+  std::vector<int> found;
+  for (const SingularVertex& s : analyzeField(mesh, field).singularities)
+    if (!s.onBorder && s.indexQuarters >= 2) found.push_back(s.vertex);
+  return found;
+}
+
 }  // namespace
 
 std::vector<char> detectSharpEdges(const SurfaceMesh& mesh, double sharpAngleDeg) {
@@ -530,13 +563,32 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
     report->sharpEdges = int(std::count(feature.begin(), feature.end(), 1));
     report->constrainedFaces = numFixed;
   }
-  if (n > 0) solveFreeFaces(mesh, unknown, n, lambda, scale * mesh.boundingBoxDiagonal(), feature, z);
+  const std::vector<Complex> fixedValues = z;
+  std::vector<char> quarterCones(mesh.numVertices(), 0);
+  if (n > 0) solveFreeFaces(mesh, unknown, n, lambda, scale * mesh.boundingBoxDiagonal(), feature, quarterCones, z);
+  CrossField field = fieldFromValues(mesh, z);
 
-  CrossField field;
-  field.u.resize(nf);
-  for (int f = 0; f < nf; ++f) {
-    double theta = std::abs(z[f]) > 0 ? std::arg(z[f]) / 4 : 0.0;
-    field.u[f] = std::cos(theta) * mesh.faceFrameX(f) + std::sin(theta) * mesh.faceFrameY(f);
+  // Cones: an interior vertex that gathers a lot of curvature (a spike of a scan, the tip of a
+  // CAD part) can end with index +1/2 or more, when the corrected connection turns the field
+  // by more than a quarter within its own star. No quad layout serves that: a +1/2 singularity
+  // has two ports, and the quad mesh splits it into two valence-3 vertices whose separatrices
+  // cut it far finer than its layout. Such a vertex keeps a quarter turn of its curvature (the
+  // rest is spread as elsewhere) and the field is solved again: it turns by exactly a quarter
+  // around it (index +1/4), the remaining index goes where the spread curvature gathers. Kept
+  // only where it lowers their count.
+  if (n > 0 && scale > 0) {
+    std::vector<int> cones = highIndexVertices(mesh, field);
+    for (int round = 0; round < kConeRounds && !cones.empty(); ++round) {
+      for (int v : cones) quarterCones[v] = 1;
+      std::vector<Complex> retry = fixedValues;
+      solveFreeFaces(mesh, unknown, n, lambda, scale * mesh.boundingBoxDiagonal(), feature, quarterCones, retry);
+      CrossField next = fieldFromValues(mesh, retry);
+      std::vector<int> left = highIndexVertices(mesh, next);
+      if (left.size() >= cones.size()) break;
+      field = std::move(next);
+      if (report) report->conesKept = int(std::count(quarterCones.begin(), quarterCones.end(), 1));
+      cones = std::move(left);
+    }
   }
   return field;
 }

@@ -40,6 +40,9 @@ struct FieldGenerationOptions {
 struct FieldGenerationReport {
   int sharpEdges = 0;        ///< number of sharp edges used as feature lines (constraints)
   int constrainedFaces = 0;  ///< faces with a hard alignment constraint
+  /// Interior vertices whose own curvature is kept undiffused because the field would otherwise
+  /// give them index +1/2 or more (sharp cones, spikes).
+  int conesKept = 0;
 };
 
 /// Per edge id (SurfaceMesh::edgeId): 1 if the dihedral angle exceeds `sharpAngleDeg`.

@@ -50,7 +50,13 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
     std::snprintf(angle, sizeof angle, "%g deg, field scale %g", p.sharpAngleDeg, p.fieldScale);
     log.info(std::string("Cross field: computed") + (p.useExisting ? " (the mesh had no field to keep)" : "") +
              ", sharp angle " + angle + ": " + std::to_string(r.generation.sharpEdges) + " sharp edges, " +
-             std::to_string(r.generation.constrainedFaces) + " constrained faces");
+             std::to_string(r.generation.constrainedFaces) + " constrained faces" +
+             (r.generation.conesKept > 0
+                  ? ", " + std::to_string(r.generation.conesKept) +
+                        (r.generation.conesKept == 1 ? " cone vertex keeps a quarter turn of its"
+                                                     : " cone vertices keep a quarter turn of their") +
+                        " curvature (index +1/2 or more there otherwise)"
+                  : std::string()));
   }
   if (source.asStored) r.field = source.asStored(r.field);
   log.progress(80, "singularities and ports");
@@ -81,6 +87,7 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
   f.set("field.computed", r.computed);
   f.set("field.sharp_edges", r.generation.sharpEdges);
   f.set("field.constrained_faces", r.generation.constrainedFaces);
+  f.set("field.quarter_cones", r.generation.conesKept);
   recordParameters(f, p, PipelineStage::Field);
   f.set("time_s.load", input.loadSeconds);
   f.set("time_s.field", r.seconds);
