@@ -280,6 +280,41 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## Quarter cones: no +1/2 singularity at a spike (issue 20, thirteenth session, 2026-12-05)
+
+Rockerarm's conforming layout (187 patches, 0 t-junctions) had a quad mesh of 677 base-complex
+patches. Its field had one singularity of index +1/2, at a spiky vertex (4 triangles, angle
+defect 121°; it stays +1/2 with the sharp edges off): two ports, patches meeting there at π, and
+the quad mesh split it into two valence-3 vertices whose separatrices ran on around the part.
+The corrected connection (*Cleaner fields* below) had spread the cone's curvature unevenly over
+its 4 edges, so the field turned by half a turn inside its star. Now a vertex the first solve
+leaves with index +1/2 or more keeps a quarter turn of its curvature (only the rest is diffused;
+the total, and so the index sum, is unchanged), the faces around it lose their curvature target
+(a cone's principal directions turn around its tip), and the field is solved again, at most
+twice, kept only where it leaves fewer such vertices (`field.quarter_cones`, a note in the log).
+Only meshes with such a vertex change: of the shared ones, rockerarm (and the dragon's computed
+field, 13 → 5 of index +1/2, 457 → 440 singularities; the bench uses its shipped field).
+
+Rockerarm, same machine and day, Release:
+
+| | S | patches | t-j | BC | quads | misaligned quads / faces | SJ min |
+|---|---:|---:|---:|---:|---:|---:|---:|
+| defaults (α 20, k 10), before | 23 | 92 | 2 | 5164 | 10565 | 15.9% / 4.0% | 0.10 |
+| defaults, after | 20 | 74 | 0 | 74 | 8592 | 16.3% / 4.5% | 0.10 |
+| bench (α 30, k 30), before | 23 | 187 | 0 | 677 | 15351 | 13.4% / 4.3% | 0.10 |
+| bench, after | 20 | 65 | 2 | 145 | 6091 | 17.3% / 8.1% | 0.05 |
+
+The structure is much coarser and closer to the paper's (30 singularities, 75 patches on its
+70K-face rockerarm): 65–74 patches instead of 92–187. At the defaults the layout is conforming and
+the quad mesh's base complex is exactly its 74 patches. At the paper's α and k the completion
+now leaves two adjacent ports of one valence-5 singularity at t-junctions (every path to another
+dangling port runs along 6 separatrices; 27 trials), where it used to close all; over α 15–30
+and k 10–30 the new field gives 0 t-junctions in 4 of 5 settings, as the old did (2 t-j at
+α 20–30, k 10 then). Misalignment is worse at the paper's α and k (13.4% → 17.3% of the quads,
+4.3% → 8.1% of the faces; paper 2.6%): the 65 patches are large and the field turns inside them.
+Still open: cones of half a sphere's curvature or more in one vertex (a sphere's top vertex
+pulled out to a 186° defect) still get +1/2; that needs a split into two +1/4 singularities.
+
 ## Conforming layouts, field-aligned patches (issues 20 and 21, eighth session, 2026-12-03)
 
 Three changes, measured together on the same 2-core VM (Release, bench parameters, other
