@@ -522,24 +522,27 @@ TEST(Quadrangulation, SharedMeshesGiveCloseManifoldQuadMeshes) {
   checkQuadMesh(*k, quadrangulateWithDefaults(*k, 0.02), "kitten");
 }
 
-TEST(Quadrangulation, PatchesWhereTheFieldAlignedQuadsStrayAreMappedWithMeanValueCoordinatesAlone) {
-  // The eight's field-aligned quads at 2% of the diagonal stray past a bound of 0.5% (its
-  // patches' grids, stretched along the field, cut across the holes' curvature). The patches
-  // near the points found too far are mapped with mean-value coordinates, the others keep
-  // the field, and the mesh meets the bound at the asked size: no refinement, not the whole
-  // stage without the field.
+TEST(Quadrangulation, PatchesWhereTheFieldAlignedQuadsStrayGetArcLengthSidesAlone) {
+  // The eight's field-aligned quads at 2% of the diagonal stray past a bound of 0.7% (its
+  // patches' grids, stretched along the field and their sides sampled unevenly to follow it,
+  // cut across the holes' curvature). The patches near the points found too far get arc
+  // length on their sides (mean-value coordinates inside only if that is not enough), the
+  // others keep the field, and the mesh meets the bound at the asked size: no refinement, not
+  // the whole stage without the field.
   FCQL_REQUIRE_SHARED_WITH_FIELD(mesh, field, "eight");
   auto q = layoutOf(mesh, &field);
   QuadrangulationOptions options;
   options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
   options.ilpTimeLimit = 30;
-  options.maxDeviation = 0.005;
+  options.maxDeviation = 0.007;
   options.fieldDirections = field.u;
   const QuadrangulationResult r = quadrangulate(q->patches, options);
-  EXPECT_GT(r.boundMeanValuePatches, 0) << "the eight's field-aligned quads now meet 0.5%: pick another case";
-  EXPECT_LT(r.boundMeanValuePatches, q->patches.numPatches());
+  const int marked = r.boundArcLengthPatches + r.boundMeanValuePatches;
+  EXPECT_GT(marked, 0) << "the eight's field-aligned quads now meet 0.7%: pick another case";
+  EXPECT_LT(marked, q->patches.numPatches());
   ASSERT_EQ(int(r.meanValuePatches.size()), q->patches.numPatches());
-  EXPECT_EQ(std::count(r.meanValuePatches.begin(), r.meanValuePatches.end(), char(1)), r.boundMeanValuePatches);
+  EXPECT_EQ(std::count(r.meanValuePatches.begin(), r.meanValuePatches.end(), kMeanValuePatch), r.boundMeanValuePatches);
+  EXPECT_EQ(std::count(r.meanValuePatches.begin(), r.meanValuePatches.end(), kArcLengthSides), r.boundArcLengthPatches);
   EXPECT_FALSE(r.boundWithoutField);
   EXPECT_EQ(r.refinements, 0);
   EXPECT_GT(r.mesh.alignedPatches, 0);
@@ -547,7 +550,7 @@ TEST(Quadrangulation, PatchesWhereTheFieldAlignedQuadsStrayAreMappedWithMeanValu
   // Independently of the stage's own measure: dense samples both ways.
   const ClosestPointIndex index(q->mesh);
   const QuadQuality quality = measureQuadQuality(r.mesh, q->mesh, q->field, index);
-  EXPECT_LE(quality.hausdorffRelative, 0.005);
+  EXPECT_LE(quality.hausdorffRelative, 0.007);
   EXPECT_EQ(quality.invertedQuads, 0);
   EXPECT_TRUE(r.report.manifold);
   EXPECT_EQ(r.report.genus, q->mesh.genus());
@@ -1077,4 +1080,26 @@ TEST(Quadrangulation, TeardropPatchGetsCornersAddedOnItsBoundary) {
   ASSERT_EQ(g.patches.size(), 1u);
   EXPECT_EQ(g.patches[0].polygonCorners, 3);
   EXPECT_EQ(g.segments.size(), 3u);
+}
+
+TEST(Quadrangulation, ThePatchesOnBothSidesOfASeparatrixAreMappedTogether) {
+  // The points inside the layout's sides slide along them to where the field-aligned maps of
+  // the patches on both sides, solved together, fit best. Each patch solved alone with the
+  // mean of both sides' choices sheared the quads along the separatrices: the fandisk had
+  // 19.7% of its quads more than π/16 off the field (25% of those next to a separatrix), and
+  // the kitten 21.7%.
+  FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
+  auto q = layoutOf(loadMesh(fandisk));
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
+  options.maxDeviation = 0.01;
+  options.fieldDirections = q->field.u;
+  const QuadrangulationResult r = quadrangulate(q->patches, options);
+  const ClosestPointIndex index(q->mesh);
+  const QuadQuality quality = measureQuadQuality(r.mesh, q->mesh, q->field, index);
+  std::cout << "fandisk: " << r.mesh.numQuads() << " quads, " << quality.misalignedPercent << "% misaligned, "
+            << quality.misalignedFacesPercent << "% of the faces, scaled Jacobian min " << quality.minScaledJacobian << "\n";
+  EXPECT_FALSE(r.boundWithoutField || r.foldsWithoutField) << "the field was dropped";
+  EXPECT_LE(quality.misalignedPercent, 12.0);
+  EXPECT_GT(quality.minScaledJacobian, 0);
 }

@@ -53,11 +53,10 @@ int foldedTriangles(const std::vector<std::array<int, 3>>& triangles, const std:
   return folded;
 }
 
-FieldAlignedResult solveFieldAlignedMap(const FieldAlignedProblem& pb) {
+FieldAlignedRows fieldAlignedRows(const FieldAlignedProblem& pb) {
   const int nt = int(pb.triangles.size()), nw = int(pb.start.size());
-  FieldAlignedResult result;
-  result.uv = pb.start;
-  if (nt == 0 || nw == 0) return result;
+  FieldAlignedRows rows;
+  if (nt == 0 || nw == 0) return rows;
   std::vector<TriangleFrame> frame(nt);
   for (int t = 0; t < nt; ++t) frame[t] = frameOf(pb.corners[t]);
 
@@ -116,6 +115,34 @@ FieldAlignedResult solveFieldAlignedMap(const FieldAlignedProblem& pb) {
   for (int k = 1; k < 4; ++k)
     if (score[k] > score[turn]) turn = k;
 
+  for (int axis = 0; axis < 2; ++axis)
+    for (int t = 0; t < nt; ++t) {
+      if (!(frame[t].area > 0)) continue;
+      const Vec3 d1 = quarterTurns(combed[t], frame[t].normal, turn + axis);  // along this axis
+      const Vec3 d2 = frame[t].normal.cross(d1);                             // across it
+      const double root = std::sqrt(frame[t].area);
+      for (int r = 0; r < 2; ++r) {
+        const Vec3& d = r == 0 ? d2 : d1;
+        const double weight = r == 0 ? root * std::sqrt(pb.alignWeight) : root;
+        FieldAlignedRows::Row row;
+        for (int i = 0; i < 3; ++i) {
+          row.wedge[i] = pb.triangles[t][i];
+          row.coefficient[i] = weight * frame[t].gradient[i].dot(d);
+        }
+        row.scale = r == 1 ? -weight : 0.0;
+        rows.axis[axis].push_back(row);
+      }
+    }
+  return rows;
+}
+
+FieldAlignedResult solveFieldAlignedMap(const FieldAlignedProblem& pb) {
+  const int nw = int(pb.start.size());
+  FieldAlignedResult result;
+  result.uv = pb.start;
+  if (pb.triangles.empty() || nw == 0) return result;
+  const FieldAlignedRows rows = fieldAlignedRows(pb);
+
   // Two independent least-squares problems, u (axis d1) and v (axis d2).
   for (int axis = 0; axis < 2; ++axis) {
     std::vector<int> var(nw, -1);
@@ -130,25 +157,16 @@ FieldAlignedResult solveFieldAlignedMap(const FieldAlignedProblem& pb) {
     std::vector<Eigen::Triplet<double>> entries;
     std::vector<double> rhs;
     int row = 0;
-    for (int t = 0; t < nt; ++t) {
-      if (!(frame[t].area > 0)) continue;
-      const Vec3 d1 = quarterTurns(combed[t], frame[t].normal, turn + axis);  // along this axis
-      const Vec3 d2 = frame[t].normal.cross(d1);                             // across it
-      const double root = std::sqrt(frame[t].area);
-      for (int r = 0; r < 2; ++r) {
-        const Vec3& d = r == 0 ? d2 : d1;
-        const double weight = r == 0 ? root * std::sqrt(pb.alignWeight) : root;
-        double b = 0;
-        for (int i = 0; i < 3; ++i) {
-          const int w = pb.triangles[t][i];
-          const double coefficient = weight * frame[t].gradient[i].dot(d);
-          if (var[w] >= 0) entries.emplace_back(row, var[w], coefficient);
-          else b -= coefficient * pb.start[w][axis];
-        }
-        if (r == 1) entries.emplace_back(row, scale, -weight);
-        rhs.push_back(b);
-        ++row;
+    for (const FieldAlignedRows::Row& r : rows.axis[axis]) {
+      double b = 0;
+      for (int i = 0; i < 3; ++i) {
+        const int w = r.wedge[i];
+        if (var[w] >= 0) entries.emplace_back(row, var[w], r.coefficient[i]);
+        else b -= r.coefficient[i] * pb.start[w][axis];
       }
+      if (r.scale != 0) entries.emplace_back(row, scale, r.scale);
+      rhs.push_back(b);
+      ++row;
     }
     Eigen::SparseMatrix<double> M(row, nv + 1);
     M.setFromTriplets(entries.begin(), entries.end());

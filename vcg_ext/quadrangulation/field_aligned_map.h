@@ -40,6 +40,20 @@ struct FieldAlignedResult {
 
 FieldAlignedResult solveFieldAlignedMap(const FieldAlignedProblem& problem);
 
+/// The least-squares rows of the problem before any wedge is fixed, per axis (0: u, 1: v):
+/// each row is Σ_i coefficient[i] · (that axis's coordinate of wedge[i]) + scale · (the axis's
+/// unknown scale a or b), to be made as small as possible (squared, summed). For solving
+/// several patches together (their sides shared).
+struct FieldAlignedRows {
+  struct Row {
+    std::array<int, 3> wedge;
+    std::array<double, 3> coefficient;
+    double scale = 0;
+  };
+  std::array<std::vector<Row>, 2> axis;
+};
+FieldAlignedRows fieldAlignedRows(const FieldAlignedProblem& problem);
+
 /// Triangles whose image has a signed area ≤ `minArea` times the mean (folded or flattened).
 int foldedTriangles(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec2>& uv, double minArea = 1e-9);
 

@@ -24,7 +24,7 @@ int PatchMap::wedge(int t, int c) const {
 
 PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
                    const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
-                   const PatchGuide* guide)
+                   const PatchGuide* guide, bool map)
     : layout_(layout), patch_(patch), triangles_(triangles) {
   for (int t : triangles_)
     for (int c = 0; c < 3; ++c) {
@@ -52,17 +52,35 @@ PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>&
     loopWedge_.push_back(wedge(rep.loopTriangle[k], cornerIn(rep.loopTriangle[k], rep.loop[k])));
     uv_[loopWedge_.back()] = boundaryUv(k);
   }
+  if (!map) return;
   if (guide && guide->faceDirections) alignToField(*guide, halfEdges);
   else mapInterior();
   indexTriangles();
 }
 
+PatchMap::PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+                   const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
+                   const PatchGuide* guide)
+    : PatchMap(layout, patch, triangles, halfEdges, boundaryUv, guide, true) {}
+
+FieldAlignedProblem PatchMap::alignedProblem(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+                                             const std::unordered_map<std::uint64_t, int>& halfEdges,
+                                             const std::function<Vec2(int)>& boundaryUv, const PatchGuide& guide,
+                                             std::vector<int>& loopWedges) {
+  const PatchMap shell(layout, patch, triangles, halfEdges, boundaryUv, &guide, false);
+  std::unordered_map<int, int> index;
+  std::vector<int> wedgeOf;
+  FieldAlignedProblem pb = shell.problem(guide, halfEdges, index, wedgeOf);
+  loopWedges.clear();
+  for (const int x : shell.loopWedge_) loopWedges.push_back(index.at(x));
+  return pb;
+}
+
 Vec2 PatchMap::loopImage(int k) const { return uv_.at(loopWedge_.at(k)); }
 
-void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges) {
+FieldAlignedProblem PatchMap::problem(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges,
+                                      std::unordered_map<int, int>& index, std::vector<int>& wedgeOf) const {
   FieldAlignedProblem pb;
-  std::unordered_map<int, int> index;  // wedge -> its number in pb
-  std::vector<int> wedgeOf;
   std::unordered_map<int, int> local;  // layout triangle -> its number in pb
   for (int k = 0; k < int(triangles_.size()); ++k) local[triangles_[k]] = k;
   for (int t : triangles_) {
@@ -102,6 +120,13 @@ void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<st
   std::unordered_map<int, int> seen;
   for (const int x : loopWedge_)
     if (++seen[x] > 1) pb.constraint[index.at(x)] = FieldAlignedProblem::Fixed;
+  return pb;
+}
+
+void PatchMap::alignToField(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges) {
+  std::unordered_map<int, int> index;  // wedge -> its number in pb
+  std::vector<int> wedgeOf;
+  const FieldAlignedProblem pb = problem(guide, halfEdges, index, wedgeOf);
   const FieldAlignedResult aligned = solveFieldAlignedMap(pb);
   if (aligned.solved && foldedTriangles(pb.triangles, aligned.uv, 0) == 0) {
     guided_ = GuidedMap::Aligned;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "layout/patch_layout.h"
+#include "quadrangulation/field_aligned_map.h"
 
 #include <array>
 #include <cstdint>
@@ -35,6 +36,14 @@ public:
            const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
            const PatchGuide* guide = nullptr);
 
+  /// The field-aligned problem the guided constructor would solve for this patch, unsolved,
+  /// and per boundary loop position its wedge's number in it (`loopWedges`): for solving
+  /// several patches together (patch_sampling.cpp).
+  static FieldAlignedProblem alignedProblem(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+                                            const std::unordered_map<std::uint64_t, int>& halfEdges,
+                                            const std::function<Vec2(int)>& boundaryUv, const PatchGuide& guide,
+                                            std::vector<int>& loopWedges);
+
   /// The image of boundary loop position k (moved along its side if it slides).
   Vec2 loopImage(int k) const;
   GuidedMap guided() const { return guided_; }
@@ -50,6 +59,14 @@ public:
   static std::uint64_t edgeKey(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
 
 private:
+  /// `map` false: only the wedges and the boundary's images (for alignedProblem).
+  PatchMap(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+           const std::unordered_map<std::uint64_t, int>& halfEdges, const std::function<Vec2(int)>& boundaryUv,
+           const PatchGuide* guide, bool map);
+  /// The field-aligned problem of the patch; `index` maps wedges to their numbers in it,
+  /// `wedgeOf` back.
+  FieldAlignedProblem problem(const PatchGuide& guide, const std::unordered_map<std::uint64_t, int>& halfEdges,
+                              std::unordered_map<int, int>& index, std::vector<int>& wedgeOf) const;
   int wedge(int t, int c) const;
   /// The images of the interior wedges (mean-value coordinates), the boundary's being set.
   void mapInterior();

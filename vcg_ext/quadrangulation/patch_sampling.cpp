@@ -3,6 +3,9 @@
 #include "quadrangulation/field_aligned_map.h"
 #include "quadrangulation/patch_map.h"
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -12,6 +15,10 @@
 
 namespace fcql {
 namespace {
+
+/// Weight of the pull of each shared segment parameter towards arc length in the joint
+/// field-aligned solve (the rows' weights are about 1).
+constexpr double kParameterPull = 1e-4;
 
 /// Points at fractions k/n (k = 1..n−1) of the arc length along a polyline.
 std::vector<Vec3> samplesAlong(const std::vector<Vec3>& poly, int n) {
@@ -114,8 +121,8 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
   for (int t = 0; t < int(layout.triangles.size()); ++t) trianglesOf[layout.patch[t]].push_back(t);
 
   // Per segment the parameter (0..n) of each of its layout vertices: by arc length, or with a
-  // field, where the field-aligned maps of the patches on its sides put it when its points may
-  // slide along the side (the mean of both sides, so that both sample it alike).
+  // field, where the field-aligned maps of the patches on its sides, solved together, put it
+  // when its points may slide along the side (one parameter, read by both sides alike).
   const int numSegments = int(graph.segments.size());
   std::vector<std::vector<double>> parameter(numSegments);
   for (int s = 0; s < numSegments; ++s) {
@@ -152,17 +159,36 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
     return std::pair<int, int>(lengths.sideLength(graph, p, 0), lengths.sideLength(graph, p, 1));
   };
   if (faceDirections) {
-    std::vector<char> shared(numSegments, 1);  // every patch on its sides is a whole layout patch
-    for (const auto& ps : graph.patches)
-      if (ps.active && !ps.original)
+    // Segments whose points slide: every patch on their sides is a whole layout patch, none of
+    // them marked in meanValuePatches (their sides go back to arc length).
+    std::vector<char> shared(numSegments, 1);
+    for (const auto& ps : graph.patches) {
+      const bool arcLength = meanValuePatches && ps.layoutPatch >= 0 && ps.layoutPatch < int(meanValuePatches->size()) &&
+                             (*meanValuePatches)[ps.layoutPatch] != kFieldPatch;
+      if (ps.active && (!ps.original || arcLength))
         for (const auto& side : ps.sides)
           for (const auto& ss : side) shared[ss.segment] = 0;
+    }
     std::vector<std::vector<double>> sum(numSegments);
     std::vector<std::vector<int>> count(numSegments);
     for (int s = 0; s < numSegments; ++s) {
       sum[s].assign(parameter[s].size(), 0);
       count[s].assign(parameter[s].size(), 0);
     }
+    // The field-aligned maps of all whole patches, solved together: u and v of the wedges
+    // inside each patch, its two scales, and one parameter per layout vertex inside a shared
+    // segment, which the patches on both sides read (each along its own side, in its own
+    // direction). The grid lines of both patches then meet a side where they fit best
+    // together, instead of each patch's own choice averaged with its neighbour's.
+    struct Piece {
+      FieldAlignedProblem problem;
+      std::vector<std::array<double, 3>> slide;  ///< per wedge: its segment parameter's unknown, A, B (coordinate A + B s)
+      std::vector<int> slideAxis;                ///< per wedge: the axis that slides (−1: none)
+    };
+    std::vector<std::vector<int>> slideVar(numSegments);
+    for (int s = 0; s < numSegments; ++s) slideVar[s].assign(parameter[s].size(), -1);
+    int numVars = 0;
+    std::vector<Piece> pieces;
     for (int p = 0; p < int(graph.patches.size()); ++p) {
       const PatchSides& ps = graph.patches[p];
       if (!ps.active || !ps.original) continue;
@@ -177,26 +203,93 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         if (i > 0 && i + 1 < m && shared[ss.segment])
           guide.loopConstraint[pos] = k % 2 == 0 ? FieldAlignedProblem::FixV : FieldAlignedProblem::FixU;
       });
-      const PatchMap map(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge, [&](int k) { return loopUv[k]; },
-                         &guide);
-      if (map.guided() != GuidedMap::Aligned && map.guided() != GuidedMap::Blended) continue;
+      std::vector<int> loopWedges;
+      Piece piece;
+      piece.problem = PatchMap::alignedProblem(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
+                                               [&](int k) { return loopUv[k]; }, guide, loopWedges);
+      const int nw = int(piece.problem.start.size());
+      piece.slide.assign(nw, {-1.0, 0.0, 0.0});
+      piece.slideAxis.assign(nw, -1);
       forEachSideVertex(p, [&](int k, const SideSegment& ss, int i, int m, int pos, double c) {
         if (!(i > 0 && i + 1 < m && shared[ss.segment])) return;
-        const Vec2 uv = map.loopImage(pos);
-        const double moved = k == 0 ? uv.x() : k == 1 ? uv.y() : k == 2 ? W - uv.x() : H - uv.y();
-        int offset = 0;
-        for (const SideSegment& before : graph.patches[p].sides[k]) {
-          if (&before == &ss) break;
-          offset += lengths.segments[before.segment];
-        }
-        const int n = lengths.segments[ss.segment];
-        const double local = moved - offset;
+        const int w = loopWedges[pos];
+        const auto sliding = k % 2 == 0 ? FieldAlignedProblem::FixV : FieldAlignedProblem::FixU;
+        if (piece.problem.constraint[w] != sliding) return;  // a wedge the loop meets twice stays fixed
         const int j = ss.reversed ? m - 1 - i : i;
-        sum[ss.segment][j] += ss.reversed ? n - local : local;
-        ++count[ss.segment][j];
+        const int n = lengths.segments[ss.segment];
+        int& var = slideVar[ss.segment][j];
+        if (var < 0) var = numVars++;
+        // c = offset + (reversed ? n − s : s) along side k, whose coordinate is c (k = 0, 1) or
+        // W − c, H − c (k = 2, 3).
+        const double offset = c - (ss.reversed ? n - parameter[ss.segment][j] : parameter[ss.segment][j]);
+        const double base = offset + (ss.reversed ? n : 0), sign = ss.reversed ? -1 : 1;
+        const double A = k < 2 ? base : (k == 2 ? W : H) - base, B = k < 2 ? sign : -sign;
+        piece.slide[w] = {double(var), A, B};
+        piece.slideAxis[w] = k % 2 == 0 ? 0 : 1;
       });
+      pieces.push_back(std::move(piece));
     }
-    // The mean of both sides, blended back towards arc length until it increases strictly.
+    const int numSlides = numVars;
+    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<double> rhs;
+    for (const Piece& piece : pieces) {
+      const FieldAlignedProblem& pb = piece.problem;
+      const FieldAlignedRows rows = fieldAlignedRows(pb);
+      const int nw = int(pb.start.size());
+      for (int axis = 0; axis < 2; ++axis) {
+        std::vector<int> var(nw, -1);
+        for (int w = 0; w < nw; ++w) {
+          const auto c = pb.constraint[w];
+          const bool fixed = c == FieldAlignedProblem::Fixed ||
+                             (axis == 0 ? c == FieldAlignedProblem::FixU : c == FieldAlignedProblem::FixV);
+          if (!fixed && piece.slideAxis[w] != axis) var[w] = numVars++;
+        }
+        const int scale = numVars++;
+        for (const FieldAlignedRows::Row& r : rows.axis[axis]) {
+          const int row = int(rhs.size());
+          double b = 0;
+          for (int i = 0; i < 3; ++i) {
+            const int w = r.wedge[i];
+            if (var[w] >= 0) {
+              entries.emplace_back(row, var[w], r.coefficient[i]);
+            } else if (piece.slideAxis[w] == axis) {
+              entries.emplace_back(row, int(piece.slide[w][0]), r.coefficient[i] * piece.slide[w][2]);
+              b -= r.coefficient[i] * piece.slide[w][1];
+            } else {
+              b -= r.coefficient[i] * pb.start[w][axis];
+            }
+          }
+          if (r.scale != 0) entries.emplace_back(row, scale, r.scale);
+          rhs.push_back(b);
+        }
+      }
+    }
+    // A faint pull of each parameter towards arc length keeps the system definite where a
+    // parameter reaches no triangle of any area.
+    for (int s = 0; s < numSegments; ++s)
+      for (std::size_t j = 0; j < slideVar[s].size(); ++j)
+        if (slideVar[s][j] >= 0) {
+          entries.emplace_back(int(rhs.size()), slideVar[s][j], kParameterPull);
+          rhs.push_back(kParameterPull * parameter[s][j]);
+        }
+    if (numSlides > 0) {
+      Eigen::SparseMatrix<double> M(int(rhs.size()), numVars);
+      M.setFromTriplets(entries.begin(), entries.end());
+      std::vector<Eigen::Triplet<double>>().swap(entries);
+      const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), Eigen::Index(rhs.size()));
+      const Eigen::SparseMatrix<double> normal = M.transpose() * M;
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+      Eigen::VectorXd x;
+      if (solver.info() == Eigen::Success) x = solver.solve(M.transpose() * b);
+      if (solver.info() == Eigen::Success && x.allFinite())
+        for (int s = 0; s < numSegments; ++s)
+          for (std::size_t j = 0; j < slideVar[s].size(); ++j)
+            if (slideVar[s][j] >= 0) {
+              sum[s][j] = x[slideVar[s][j]];
+              count[s][j] = 1;
+            }
+    }
+    // The solved parameters, blended back towards arc length until they increase strictly.
     for (int s = 0; s < numSegments; ++s) {
       const int m = int(parameter[s].size());
       bool any = false;
@@ -289,7 +382,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         forEachSideVertex(p, [&](int k, const SideSegment&, int, int, int pos, double c) { loopUv[pos] = sideUv(k, c, W, H); });
       }
       const bool keepMeanValue = meanValuePatches && ps.layoutPatch < int(meanValuePatches->size()) &&
-                                 (*meanValuePatches)[ps.layoutPatch];
+                                 (*meanValuePatches)[ps.layoutPatch] == kMeanValuePatch;
       auto map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
                                             [&](int k) { return loopUv[k]; }, faceDirections && !keepMeanValue ? &guide : nullptr);
       std::vector<Vec3> inner = innerGrid(*map, W, H);

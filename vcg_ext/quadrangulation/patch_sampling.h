@@ -22,12 +22,14 @@ std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p);
 
 /// With `faceDirections` (the cross field's direction 0 per input face, indexed by
 /// PatchLayout::originalFace), each whole layout patch is mapped field-aligned instead
-/// (field_aligned_map.h): first with the points inside its sides free to slide along them,
-/// which gives each segment's parameter (the mean of its two sides', so that both sample it
-/// alike; arc length where a split part lies on it), then again with the sides fixed there.
-/// A map that folds is blended back towards mean-value coordinates (QuadMesh counts them).
-/// Layout patches marked in `meanValuePatches` keep mean-value coordinates inside, their sides
-/// sampled as with the field.
+/// (field_aligned_map.h): first all of them together, the points inside their sides free to
+/// slide along them and each shared by the two patches of its side (one unknown per point,
+/// which both patches' maps read), which gives each segment's parameter (arc length where a
+/// split part lies on it), then each again with its sides fixed there. A map that folds is
+/// blended back towards mean-value coordinates (QuadMesh counts them). Layout patches marked
+/// in `meanValuePatches` (per layout patch) get arc length on their sides: kArcLengthSides
+/// keeps the field-aligned map inside, kMeanValuePatch mean-value coordinates.
+constexpr char kFieldPatch = 0, kMeanValuePatch = 1, kArcLengthSides = 2;
 QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths,
                        const std::vector<Vec3>* faceDirections = nullptr,
                        const std::vector<char>* meanValuePatches = nullptr);

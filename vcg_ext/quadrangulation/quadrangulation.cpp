@@ -72,7 +72,8 @@ SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOp
     smoothing.triangleDirections.assign(layout.triangles.size(), Vec3::Zero());
     for (std::size_t t = 0; t < layout.triangles.size(); ++t) {
       const int f = layout.originalFace[t], p = t < layout.patch.size() ? layout.patch[t] : -1;
-      if (meanValuePatches && p >= 0 && p < int(meanValuePatches->size()) && (*meanValuePatches)[p]) continue;
+      if (meanValuePatches && p >= 0 && p < int(meanValuePatches->size()) && (*meanValuePatches)[p] == kMeanValuePatch)
+        continue;
       if (f >= 0 && f < int(options.fieldDirections.size())) smoothing.triangleDirections[t] = options.fieldDirections[f];
     }
   }
@@ -96,9 +97,9 @@ int foldedQuads(const QuadMesh& m, std::vector<int>* which = nullptr) {
 /// smooth the same side lengths, tried in turn; the first that folds fewer and that `accept`
 /// takes (given the result with it, which it may change, e.g. measure) replaces `r`.
 /// Smoothing towards the field can leave a fold the neighbours' average would have undone:
-/// the plain smoothing first, on the same samples. Then the patches the folds lie in sampled
-/// again with mean-value coordinates inside (their sides where they were, so the neighbours do
-/// not change), and last the whole pass without the field (mean-value maps, arc-length sides,
+/// the plain smoothing first, on the same samples. Then the patches the folds and the quads
+/// around them lie in sampled again with mean-value coordinates inside and arc length on
+/// their sides (the neighbours keep the field inside), and last the whole pass without the field (mean-value maps, arc-length sides,
 /// plain smoothing). Returns whether one was taken. Run once, on the pass the refinements keep.
 /// Whatever the number of folds: the three cost less than the whole stage without the field
 /// that follows when folds are left (the dragon's field-aligned pass folded 21 quads, over the
@@ -118,12 +119,21 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
     if (k > 0) {
       std::vector<char> meanValue = r.meanValuePatches;
       meanValue.resize(layout.patches.size(), 0);
+      // The patches of the folded quads and of the quads around them: a fold at a patch's
+      // side takes the patch across it too, the side then sampled by arc length.
+      std::vector<char> near(r.mesh.numVertices(), 0);
       for (int q : folded)
-        if (q < int(r.mesh.quadPatch.size()) && r.mesh.quadPatch[q] >= 0) meanValue[r.mesh.quadPatch[q]] = 1;
+        for (int v : r.mesh.quads[q]) near[v] = 1;
+      for (int q = 0; q < r.mesh.numQuads() && q < int(r.mesh.quadPatch.size()); ++q) {
+        const auto& quad = r.mesh.quads[q];
+        if (r.mesh.quadPatch[q] >= 0 && std::any_of(quad.begin(), quad.end(), [&](int v) { return near[v] != 0; }))
+          meanValue[r.mesh.quadPatch[q]] = kMeanValuePatch;
+      }
       c.mesh = k == 1 ? samplePatches(layout, r.graph, r.lengths, &options.fieldDirections, &meanValue)
                       : samplePatches(layout, r.graph, r.lengths);
       c.meanValuePatches = k == 1 ? meanValue : std::vector<char>();
       c.boundMeanValuePatches = k == 1 ? r.boundMeanValuePatches : 0;
+      c.boundArcLengthPatches = k == 1 ? r.boundArcLengthPatches : 0;
       c.dissolvedVertices = dissolveTwoValentVertices(c.mesh);
       c.sampledPositions = c.mesh.positions;
     }
@@ -238,7 +248,8 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
                          field ? meanValuePatches : nullptr);
   if (field && meanValuePatches) {
     r.meanValuePatches = *meanValuePatches;
-    r.boundMeanValuePatches = int(std::count(meanValuePatches->begin(), meanValuePatches->end(), char(1)));
+    r.boundMeanValuePatches = int(std::count(meanValuePatches->begin(), meanValuePatches->end(), kMeanValuePatch));
+    r.boundArcLengthPatches = int(std::count(meanValuePatches->begin(), meanValuePatches->end(), kArcLengthSides));
   }
   r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
   r.sampledPositions = r.mesh.positions;
@@ -337,31 +348,36 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   QuadrangulationResult r = measuredPass(options, options.fieldDirections.empty() ? nullptr : &far);
   if (r.mesh.numQuads() == 0) return r;  // nothing to measure
   // Where the field-aligned maps miss the bound (patches stretched along the field where the
-  // surface curves across them), first only the patches near the points found too far are
-  // mapped with mean-value coordinates inside, their sides sampled as before so that the
-  // other patches keep their field-aligned grids; a few rounds, as the points too far may
-  // move on to the next patches. Kept if it meets the bound.
+  // surface curves across them, or sides sampled unevenly to follow it), first only the
+  // patches near the points found too far get arc length on their sides, keeping the field
+  // inside; then, if that is not enough, mean-value coordinates inside as well. The other
+  // patches keep their field-aligned grids. A few rounds each, as the points too far may move
+  // on to the next patches. Kept if it meets the bound.
   if (r.deviationBound > limit && !options.fieldDirections.empty()) {
-    std::vector<char> meanValue(layout.patches.size(), 0);
+    std::vector<char> marks(layout.patches.size(), kFieldPatch);
     QuadrangulationResult local = r;
-    for (int round = 0; round < 3 && local.deviationBound > limit && !far.empty(); ++round) {
-      // Each point too far (on the quads, or on the surface where the quads do not cover it)
-      // marks the patch of the quad nearest to it.
-      const ClosestPointIndex quadIndex(local.mesh.positions, quadTriangles(local.mesh));
-      int marked = 0;
-      for (const Vec3& point : far) {
-        const int q = quadIndex.closest(point).triangle / 2;
-        const int p = q < int(local.mesh.quadPatch.size()) ? local.mesh.quadPatch[q] : -1;
-        if (p >= 0 && p < int(meanValue.size()) && !meanValue[p]) meanValue[p] = 1, ++marked;
+    std::vector<Vec3> localFar = far;
+    for (const char level : {kArcLengthSides, kMeanValuePatch}) {
+      for (int round = 0; round < 3 && local.deviationBound > limit && !localFar.empty(); ++round) {
+        // Each point too far (on the quads, or on the surface where the quads do not cover it)
+        // marks the patch of the quad nearest to it.
+        const ClosestPointIndex quadIndex(local.mesh.positions, quadTriangles(local.mesh));
+        int marked = 0;
+        for (const Vec3& point : localFar) {
+          const int q = quadIndex.closest(point).triangle / 2;
+          const int p = q < int(local.mesh.quadPatch.size()) ? local.mesh.quadPatch[q] : -1;
+          if (p >= 0 && p < int(marks.size()) && marks[p] < level) marks[p] = level, ++marked;
+        }
+        if (marked == 0) break;
+        try {
+          QuadrangulationResult next = quadrangulateOnce(layout, options, topology, cache, &marks);
+          measure(next, &localFar);
+          local = std::move(next);
+        } catch (const std::runtime_error&) {
+          break;  // the whole stage without the field is tried below
+        }
       }
-      if (marked == 0) break;
-      try {
-        QuadrangulationResult next = quadrangulateOnce(layout, options, topology, cache, &meanValue);
-        measure(next, &far);
-        local = std::move(next);
-      } catch (const std::runtime_error&) {
-        break;  // the whole stage without the field is tried below
-      }
+      if (local.deviationBound <= limit) break;
     }
     if (local.deviationBound <= limit) r = std::move(local);
   }
@@ -492,11 +508,15 @@ std::vector<std::string> refinementNotes(const QuadrangulationResult& r, const Q
   if (r.boundWithoutField)
     notes.push_back("the field-aligned patch maps stayed farther than the distance bound from the surface; the quads "
                     "were made without the field (mean-value maps), which meet it");
+  if (r.boundArcLengthPatches > 0)
+    notes.push_back("the field-aligned patch maps strayed farther than the distance bound from the surface near " +
+                    std::to_string(r.boundArcLengthPatches) +
+                    " layout patches: their sides were sampled by arc length (the field kept inside), which meets it");
   if (r.boundMeanValuePatches > 0)
     notes.push_back("the field-aligned patch maps strayed farther than the distance bound from the surface near " +
                     std::to_string(r.boundMeanValuePatches) +
-                    " layout patches: those were mapped with mean-value coordinates inside (their sides as with the "
-                    "field), which meets it");
+                    " layout patches: those were mapped with mean-value coordinates inside (arc length on their sides), "
+                    "which meets it");
   if (options.maxDeviation <= 0) return notes;
   char line[400];
   const double diagonal = r.deviationLimit / options.maxDeviation;

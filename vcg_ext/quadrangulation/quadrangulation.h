@@ -43,11 +43,15 @@ struct QuadrangulationResult {
   /// where it strayed (meanValuePatches) and after its refinements; the whole stage without
   /// the field (mean-value maps) met it and was kept.
   bool boundWithoutField = false;
-  /// Layout patches mapped with mean-value coordinates inside instead of the field (their
-  /// sides still sampled with it), because the field-aligned quads near them strayed farther
-  /// than maxDeviation from the surface; empty if none.
+  /// Per layout patch (patch_sampling.h): kMeanValuePatch where it was mapped with mean-value
+  /// coordinates inside instead of the field, kArcLengthSides where only its sides were
+  /// sampled by arc length, because the field-aligned quads near it strayed farther than
+  /// maxDeviation from the surface (or, kMeanValuePatch, folded); empty if none.
   std::vector<char> meanValuePatches;
-  int boundMeanValuePatches = 0;  ///< how many are marked in meanValuePatches
+  int boundMeanValuePatches = 0;  ///< how many are marked kMeanValuePatch in meanValuePatches
+  /// How many are marked kArcLengthSides: the field inside, arc length on their sides (a
+  /// first step, tried before mean-value maps).
+  int boundArcLengthPatches = 0;
   std::vector<Vec3> sampledPositions;  ///< the mesh's vertex positions before smoothing
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
   /// than maxDeviation from the surface (restoreSampledPositions).
