@@ -280,6 +280,68 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## The patches on both sides of a separatrix mapped together (issue 21, thirteenth session, 2026-12-05)
+
+Where were the misaligned quads? An independent count on the kitten, bunny and fandisk (per
+quad, the worse of its two directions against the field of the input face under its centre)
+found 85–95% of them sheared (one direction on the field, the other more than π/16 off because
+the quad is not square), and twice as many next to the layout's separatrices as inside the
+patches (bunny 24.9% against 9.5%, fandisk 25.0% against 15.1%, kitten 29.7% against 15.7%).
+The separatrices themselves were not the cause (5.7–12.8% of their length more than π/16 off the
+field at the quads' scale), nor the smoothing (40 rounds instead of 5: kitten 21.7% → 20.2%), nor
+the weight of the alignment against the even spacing (λ 1–1000: ±3%). It was the sides: each patch
+was mapped alone with the points of its sides sliding, and each side then took the mean of its
+two patches' choices, which neither patch's grid fits.
+
+Now all whole patches are solved in one sparse least-squares system (Eigen's SimplicialLDLT on
+the normal equations, as each patch before): u and v of the vertices inside each patch, its two
+scales, and one unknown per layout vertex inside a side, which both patches read along their
+own side and direction (a faint pull, 1e-4, towards arc length keeps it definite). The patches
+are then mapped again one by one with their sides fixed there, as before (the same problem
+restricted to one patch, so the same interior). Near separatrices the kitten's quads went from
+29.7% to 15.1% misaligned, the fandisk's from 25.0% to 8.9%.
+
+The fallbacks follow the new sides. Around folds left after smoothing, the patches of the
+folded quads and of the quads around them get mean-value maps and arc length on their sides
+(a fold at a side needs the patch across it: the bunny's single fold otherwise sent its whole
+stage to the mesh without the field, 23.3% misaligned). Where the quads stray past the distance
+bound, the patches near the points too far first get arc length on their sides with the field
+kept inside (`quad.field_bound_arc_length_patches`), and mean-value maps only if that is not
+enough. The sides' uneven sampling brings the quads closer to the bound (eight 0.50% → 0.71%,
+lilium 0.25% → 0.60%, camelhead refined to 30,581 quads instead of 29,176), and at a tighter bound
+this costs much of the gain: the eight at `--max-deviation 0.005` needs arc-length sides on all 88
+patches (22.9% misaligned, 19.7% before), at 0.007 on 50 (22.2%). Tried and dropped: limiting how
+unevenly a side may be sampled (spacing within 1.5× or 2.5× of arc length): it kept the bunny
+within the bound but gave back most of the gain elsewhere (lilium 28.6% → 51.2% at 1.5×, 41.9% at
+2.5×; camelhead 7.4% → 17.4% at 1.5×).
+
+Same machine and day, Release, bench parameters (before: the commit with the quarter cones):
+
+| mesh | misaligned quads % | misaligned faces % | SJ min / mean | Hausdorff % | quads | quad stage s |
+|---|---:|---:|---:|---:|---:|---:|
+| aqua_center | 15.0 → 0.9 | 1.4 → 0.6 | 0.10 / 0.97 → 0.33 / 0.99 | 0.20 → 0.19 | 1702 → 1702 | 0.10 → 0.14 |
+| bunny | 15.1 → 9.4 | 1.8 → 1.8 | 0.11 / 0.97 → 0.13 / 0.98 | 0.69 → 0.65 | 7589 → 7589 | 0.33 → 1.02 |
+| camelhead | 25.4 → 7.4 | 5.8 → 4.1 | 0.10 / 0.97 → 0.10 / 0.99 | 0.74 → 0.89 | 29176 → 30581 | 2.87 → 4.35 |
+| deckel | 22.0 → 13.9 | 2.6 → 1.5 | 0.11 / 0.96 → 0.10 / 0.97 | 0.60 → 0.61 | 15844 → 15844 | 0.34 → 0.44 |
+| dragon | 36.6 → 37.0 | 19.5 → 19.4 | -0.62 / 0.89 → -0.49 / 0.89 | 0.89 → 0.86 | 67733 → 67733 | 18.29 → 16.68 |
+| eight | 19.4 → 9.6 | 4.9 → 2.8 | 0.11 / 0.96 → 0.14 / 0.98 | 0.50 → 0.71 | 7092 → 7092 | 0.28 → 0.30 |
+| fandisk | 19.7 → 9.0 | 2.0 → 1.0 | 0.01 / 0.97 → 0.14 / 0.98 | 0.55 → 0.56 | 7440 → 7440 | 0.29 → 0.30 |
+| fertility | 13.4 → 9.6 | 2.5 → 2.2 | 0.10 / 0.97 → 0.10 / 0.97 | 0.72 → 0.79 | 4430 → 4430 | 0.47 → 0.41 |
+| joint | 3.9 → 0.7 | 0.5 → 0.3 | 0.14 / 0.99 → 0.49 / 1.00 | 0.50 → 0.50 | 7200 → 7200 | 0.70 → 0.63 |
+| kitten | 21.7 → 11.9 | 8.3 → 5.2 | 0.11 / 0.95 → 0.12 / 0.97 | 0.79 → 0.91 | 4680 → 4680 | 0.13 → 0.12 |
+| lilium | 48.2 → 28.6 | 19.4 → 13.6 | 0.05 / 0.87 → 0.06 / 0.95 | 0.25 → 0.60 | 3249 → 3249 | 0.11 → 0.14 |
+| rockerarm | 17.3 → 15.3 | 8.1 → 7.3 | 0.05 / 0.94 → 0.05 / 0.94 | 0.68 → 0.73 | 6091 → 6091 | 0.31 → 0.33 |
+
+Issue 21's targets for the quads more than π/16 off the field: ≤ 10% is now met on bunny (9.4%),
+fertility (9.6%), eight (9.6%), joint (0.7%) and fandisk (9.0%), not on the kitten (11.9%, a
+coarse mesh of 3,700 faces whose field turns by 5° or more across 8.5% of its edges); ≤ 20% on
+rockerarm (15.3%), camelhead (7.4%) and aqua_center (0.9%), not on lilium (28.6%). Per face,
+fertility 2.2% (paper 5.9%), rockerarm 7.3% (paper 2.6%). The dragon is not helped: its field-
+aligned pass folds 18 quads, the plain smoothing of it 15, the mean-value maps around the folds 11
+but past the distance bound, so the stage without the field is kept (13 folds, 12 before; 37.0%
+misaligned). The bunny's quad stage takes about 1 s instead of 0.3 s (its one fold now sends it
+through the fold fallback, which keeps the field); camelhead's refined pass is larger.
+
 ## Quarter cones: no +1/2 singularity at a spike (issue 20, thirteenth session, 2026-12-05)
 
 Rockerarm's conforming layout (187 patches, 0 t-junctions) had a quad mesh of 677 base-complex
