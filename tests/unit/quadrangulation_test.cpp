@@ -43,6 +43,15 @@ std::unique_ptr<Quadrangulated> layoutOf(SurfaceMesh mesh, const CrossField* giv
   return q;
 }
 
+/// Quads of 2% of the diagonal that follow the layout's field, within `maxDeviation` (0: no bound).
+QuadrangulationOptions fieldAlignedOptions(const Quadrangulated& q, double maxDeviation) {
+  QuadrangulationOptions options;
+  options.targetEdgeLength = 0.02 * q.mesh.boundingBoxDiagonal();
+  options.maxDeviation = maxDeviation;
+  options.fieldDirections = q.field.u;
+  return options;
+}
+
 /// The layout without its completion step: it keeps the t-junctions (and zero chains) that
 /// the tests of their handling need.
 LayoutParameters withTJunctions() {
@@ -261,10 +270,7 @@ TEST(Quadrangulation, SmoothingGivesTheSameQuadsOnAnyNumberOfThreads) {
   // Neither may change the result.
   FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
   auto q = layoutOf(loadMesh(fandisk));
-  QuadrangulationOptions options;
-  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
-  options.maxDeviation = 0;
-  options.fieldDirections = q->field.u;
+  QuadrangulationOptions options = fieldAlignedOptions(*q, 0);
   options.smoothing.threads = 1;
   const QuadrangulationResult one = quadrangulate(q->patches, options);
   options.smoothing.threads = 2;
@@ -531,11 +537,8 @@ TEST(Quadrangulation, PatchesWhereTheFieldAlignedQuadsStrayGetArcLengthSidesAlon
   // the whole stage without the field.
   FCQL_REQUIRE_SHARED_WITH_FIELD(mesh, field, "eight");
   auto q = layoutOf(mesh, &field);
-  QuadrangulationOptions options;
-  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
+  QuadrangulationOptions options = fieldAlignedOptions(*q, 0.007);
   options.ilpTimeLimit = 30;
-  options.maxDeviation = 0.007;
-  options.fieldDirections = field.u;
   const QuadrangulationResult r = quadrangulate(q->patches, options);
   const int marked = r.boundArcLengthPatches + r.boundMeanValuePatches;
   EXPECT_GT(marked, 0) << "the eight's field-aligned quads now meet 0.7%: pick another case";
@@ -1090,11 +1093,7 @@ TEST(Quadrangulation, ThePatchesOnBothSidesOfASeparatrixAreMappedTogether) {
   // the kitten 21.7%.
   FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
   auto q = layoutOf(loadMesh(fandisk));
-  QuadrangulationOptions options;
-  options.targetEdgeLength = 0.02 * q->mesh.boundingBoxDiagonal();
-  options.maxDeviation = 0.01;
-  options.fieldDirections = q->field.u;
-  const QuadrangulationResult r = quadrangulate(q->patches, options);
+  const QuadrangulationResult r = quadrangulate(q->patches, fieldAlignedOptions(*q, 0.01));
   const ClosestPointIndex index(q->mesh);
   const QuadQuality quality = measureQuadQuality(r.mesh, q->mesh, q->field, index);
   std::cout << "fandisk: " << r.mesh.numQuads() << " quads, " << quality.misalignedPercent << "% misaligned, "

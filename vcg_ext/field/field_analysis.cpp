@@ -242,10 +242,35 @@ std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field,
   return ports;
 }
 
-FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
+namespace {
+
+/// Index ×4 of the vertex whose star chart is w.
+int indexQuartersOf(const StarChart& w) {
+  double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
+  if (w.loop) return quartersFromTurn(4 * (1 + (sumDelta - w.theta) / (2 * kPi)));
+  double ms = wrapQuarter(w.psi.front() - 0.0);
+  double me = wrapQuarter(w.psi.back() - w.theta);
+  return quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
+}
+
+void checkFieldMatchesMesh(const SurfaceMesh& mesh, const CrossField& field) {
   if (field.numFaces() != mesh.numFaces())
     throw FieldError("the field has " + std::to_string(field.numFaces()) + " faces but the mesh has " +
                      std::to_string(mesh.numFaces()));
+}
+
+}  // namespace
+
+std::vector<int> computeVertexIndices(const SurfaceMesh& mesh, const CrossField& field) {
+  checkFieldMatchesMesh(mesh, field);
+  std::vector<int> quarters(mesh.numVertices(), 0);
+  for (int v = 0; v < mesh.numVertices(); ++v)
+    if (!mesh.star(v).empty()) quarters[v] = indexQuartersOf(computeStarChart(mesh, field, v));
+  return quarters;
+}
+
+FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
+  checkFieldMatchesMesh(mesh, field);
   FieldAnalysis out;
   out.matching.assign(mesh.numFaces(), {0, 0, 0});
   for (int f = 0; f < mesh.numFaces(); ++f)
@@ -256,15 +281,7 @@ FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
     if (mesh.star(v).empty()) continue;
     StarChart w = computeStarChart(mesh, field, v);
     out.starAngle[v] = w.theta;
-    double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
-    int quarters;
-    if (w.loop) {
-      quarters = quartersFromTurn(4 * (1 + (sumDelta - w.theta) / (2 * kPi)));
-    } else {
-      double ms = wrapQuarter(w.psi.front() - 0.0);
-      double me = wrapQuarter(w.psi.back() - w.theta);
-      quarters = quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
-    }
+    int quarters = indexQuartersOf(w);
     out.vertexIndexQuarters[v] = quarters;
     if (quarters != 0) {
       SingularVertex s;

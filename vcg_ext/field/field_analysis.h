@@ -116,6 +116,10 @@ Vec3 unfoldIntoFace(const SurfaceMesh& mesh, int f, int i, const Vec3& vectorInG
 /// Everything above, for every vertex. Throws FieldError if the field does not match the mesh.
 FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field);
 
+/// The index ×4 of every vertex alone (what analyzeField puts in vertexIndexQuarters), without
+/// matchings or ports. Throws FieldError if the field does not match the mesh.
+std::vector<int> computeVertexIndices(const SurfaceMesh& mesh, const CrossField& field);
+
 /// Ports of one vertex (also used for regular vertices by the tracer when needed).
 std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field, int v);
 

@@ -503,8 +503,9 @@ CrossField fieldFromValues(const SurfaceMesh& mesh, const std::vector<Complex>& 
 /// Interior singular vertices of index +1/2 or more.
 std::vector<int> highIndexVertices(const SurfaceMesh& mesh, const CrossField& field) {
   std::vector<int> found;
-  for (const SingularVertex& s : analyzeField(mesh, field).singularities)
-    if (!s.onBorder && s.indexQuarters >= 2) found.push_back(s.vertex);
+  std::vector<int> quarters = computeVertexIndices(mesh, field);
+  for (int v = 0; v < mesh.numVertices(); ++v)
+    if (quarters[v] >= 2 && !mesh.isBorderVertex(v)) found.push_back(v);
   return found;
 }
 
