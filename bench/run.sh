@@ -280,6 +280,42 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## What the smoothing does to the field-aligned quads; conformal corner scales tried (issue 21, fourteenth session, 2026-12-05)
+
+Measured on this machine (2 cores, AMD EPYC, shared VM), bench settings, fields computed
+except the eight's and lilium's. Misaligned quads (more than π/16 off the field) of the
+sampled field-aligned grid with no smoothing against the default 5 passes, both with no
+distance bound (`--max-deviation 0`), so that no fallback changes the maps:
+
+| mesh | misaligned, 0 passes | 5 passes | min scaled Jacobian, 0 / 5 | distance, 0 / 5 |
+|---|---:|---:|---:|---:|
+| bunny | 4.6% | 9.4% | −0.43 / 0.13 | 0.82 / 0.66% |
+| fandisk | 8.1% | 9.0% | −0.17 / 0.14 | 0.95 / 0.59% |
+| eight | 8.2% | 9.6% | −0.49 / 0.14 | 0.77 / 0.71% |
+| kitten | 10.8% | 11.9% | −0.29 / 0.12 | 1.25 / 0.91% |
+| fertility | 8.9% | 9.6% | −0.06 / 0.10 | 0.84 / 0.80% |
+| lilium | 25.7% | 28.6% | −0.55 / 0.06 | 0.60 / 0.60% |
+| aqua_center | 0.9% | 0.9% | 0.40 / 0.33 | 0.20 / 0.19% |
+| camelhead | 13.4% | 10.1% | −0.90 / 0.09 | 2.08 / 1.81% |
+
+The smoothing towards the field-aligned rectangles of each quad (one field direction per
+quad, each vertex moving half-way to the mean of its quads' rectangle corners) undoes up to
+half of what the joint field-aligned maps gain: on the bunny it doubles the misaligned quads,
+inside the patches (2.0 → 5.4%) and next to the separatrices (9.2 → 16.2%) alike. It is kept
+for now because the unsmoothed grids fold a few quads (2–12 per mesh) and stray further from
+the surface (kitten 1.25%, over the 1% bound), and with 1 or 2 passes the kitten is over the
+bound, its 68 patches fall back to arc-length sides and 28–29% of its quads are misaligned.
+Lead for the next change: smooth only where a fold or the distance asks for it, or smooth in
+each patch's parameter domain, so that the map's alignment stays.
+
+Tried and dropped: per-triangle scales as a conformal map onto the rectangle would have them
+near corners that are not right angles (the scale r^(α−1) around a corner of angle θ,
+α = (π/2)/θ: larger quads beside a 72° corner of a valence-5 singularity, smaller beside a
+120° one). Misaligned quads, before → after: bunny 9.4 → 6.4%, fertility 9.6 → 9.3%, aqua_center
+0.9 → 0.6%, eight 9.6 → 9.7%, but kitten 11.9 → 12.3%, fandisk 9.0 → 10.0%, lilium 28.6 → 33.4%.
+The kitten's misaligned quads near its singularities did not change (rings 1–3 around them:
+29%, 23%, 16% either way), so the corner's angle is not what shears them there.
+
 ## The patches on both sides of a separatrix mapped together (issue 21, thirteenth session, 2026-12-05)
 
 Where were the misaligned quads? An independent count on the kitten, bunny and fandisk (per
