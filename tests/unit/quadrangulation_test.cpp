@@ -1102,3 +1102,31 @@ TEST(Quadrangulation, ThePatchesOnBothSidesOfASeparatrixAreMappedTogether) {
   EXPECT_LE(quality.misalignedPercent, 12.0);
   EXPECT_GT(quality.minScaledJacobian, 0);
 }
+
+TEST(Quadrangulation, TheFieldAlignedGridIsSmoothedOnlyAroundItsPoorQuads) {
+  // Smoothing towards the field everywhere turns the sampled field-aligned grid away from it
+  // (each quad fitted to one field direction, the fits averaged at each vertex). The stage
+  // smooths only around quads of scaled Jacobian below 0.5: more quads follow the field, and
+  // the vertices far from poor quads stay where the maps put them.
+  FCQL_REQUIRE_SHARED(fandisk, "fandisk.obj");
+  auto q = layoutOf(loadMesh(fandisk));
+  QuadrangulationOptions options = fieldAlignedOptions(*q, 0.01);
+  const QuadrangulationResult kept = quadrangulate(q->patches, options);
+  options.keepFieldGrid = false;
+  const QuadrangulationResult everywhere = quadrangulate(q->patches, options);
+  ASSERT_TRUE(kept.fieldGridKept) << "the grid was smoothed everywhere: the kept one missed the bound";
+  EXPECT_FALSE(everywhere.fieldGridKept);
+  ASSERT_EQ(kept.mesh.quads, everywhere.mesh.quads) << "the same sampling, smoothed differently";
+  int unmoved = 0;
+  for (std::size_t v = 0; v < kept.mesh.positions.size(); ++v)
+    unmoved += kept.mesh.positions[v] == kept.sampledPositions[v];
+  EXPECT_GT(unmoved, int(kept.mesh.positions.size()) / 4) << "the grid was smoothed nearly everywhere";
+  const ClosestPointIndex index(q->mesh);
+  const QuadQuality a = measureQuadQuality(kept.mesh, q->mesh, q->field, index);
+  const QuadQuality b = measureQuadQuality(everywhere.mesh, q->mesh, q->field, index);
+  std::cout << "fandisk misaligned: kept grid " << a.misalignedPercent << "%, smoothed everywhere " << b.misalignedPercent
+            << "%; " << unmoved << " of " << kept.mesh.positions.size() << " vertices where sampled\n";
+  EXPECT_LT(a.misalignedPercent, b.misalignedPercent);
+  EXPECT_EQ(a.invertedQuads, 0);
+  EXPECT_LE(a.hausdorffRelative, 0.01);
+}

@@ -116,6 +116,7 @@ void record(const QuadStageResult& s, const PipelineParameters& p, Figures& f) {
   f.set("quad.field_bound_without_field", r.boundWithoutField);
   f.set("quad.field_bound_mean_value_patches", r.boundMeanValuePatches);
   f.set("quad.field_bound_arc_length_patches", r.boundArcLengthPatches);
+  f.set("quad.field_grid_kept", r.fieldGridKept);
   f.set("quad.field_aligned_patches", q.alignedPatches);
   f.set("quad.field_blended_patches", q.blendedPatches);
   f.set("quad.field_mean_value_patches", q.meanValuePatches);

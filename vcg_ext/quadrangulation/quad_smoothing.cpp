@@ -20,6 +20,9 @@ namespace {
 
 constexpr double kSnapShare = 0.35;
 constexpr double kMinScaledJacobian = 0.1;
+/// How far around a poor quad the smoothing moves vertices when it keeps the sampled grid
+/// elsewhere (SmoothingOptions::keepGridAbove).
+constexpr int kKeepGridRings = 2;
 constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower
 constexpr double kSlideAngleDeg = 60;
 constexpr double kSlideTurnDeg = 20;
@@ -299,6 +302,30 @@ void alignedTargets(const QuadMesh& quads, const ClosestPointIndex& index, const
   }
 }
 
+/// The vertices a smoothing round moves: all, unless `keepGridAbove` > 0 and the quads follow
+/// the field (`alignedCount`: per vertex, its quads fitted to the field): then only those
+/// within kKeepGridRings rings of a quad whose scaled Jacobian (`jacobianOf`) is below
+/// `keepGridAbove`, or with a quad around them that has no field (a mean-value patch).
+std::vector<char> movingVertices(const QuadMesh& quads, const QuadJacobian& jacobian, const std::vector<double>& jacobianOf,
+                                 const std::vector<std::vector<int>>& neighbours, const std::vector<int>& alignedCount,
+                                 double keepGridAbove) {
+  const int nv = quads.numVertices();
+  std::vector<char> moving(nv, 1);
+  if (!(keepGridAbove > 0) || alignedCount.size() != std::size_t(nv)) return moving;
+  for (int v = 0; v < nv; ++v) moving[v] = alignedCount[v] < int(jacobian.quadsAround(v).size());
+  for (int q = 0; q < quads.numQuads(); ++q)
+    if (jacobianOf[q] < keepGridAbove)
+      for (int c : quads.quads[q]) moving[c] = 1;
+  for (int ring = 0; ring < kKeepGridRings; ++ring) {
+    std::vector<char> grown = moving;
+    for (int v = 0; v < nv; ++v)
+      if (moving[v])
+        for (int w : neighbours[v]) grown[w] = 1;
+    moving.swap(grown);
+  }
+  return moving;
+}
+
 }  // namespace
 
 SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
@@ -306,6 +333,8 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
                                const SmoothingOptions& options) {
   if (options.iterations < 0) throw std::invalid_argument("smoothing: the number of iterations must be >= 0");
   if (!(options.step > 0 && options.step <= 1)) throw std::invalid_argument("smoothing: the step must be in (0, 1]");
+  if (!(options.keepGridAbove >= 0 && options.keepGridAbove <= 1))
+    throw std::invalid_argument("smoothing: keepGridAbove must be in [0, 1]");
   SmoothingReport report;
   if (options.iterations == 0 || quads.numQuads() == 0) return report;
 
@@ -429,13 +458,15 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     const std::vector<Vec3> previous = quads.positions;
     jacobian.all(before);
     if (aligned) alignedTargets(quads, index, normals, options.triangleDirections, threads, alignedSum, alignedCount);
+    const std::vector<char> moving = movingVertices(quads, jacobian, before, neighbours, aligned ? alignedCount : std::vector<int>{},
+                                                    options.keepGridAbove);
     // Each vertex's move depends on the previous positions only: the vertices are shared
     // among the worker threads (interleaved), the result the same for any number of them.
     std::vector<int> snapped(threads, 0);
     runOnWorkerThreads(threads, [&](int worker) {
       for (int v = worker; v < nv; v += threads) {
         next[v] = previous[v];
-        if (fixed[v] || neighbours[v].empty()) continue;
+        if (fixed[v] || neighbours[v].empty() || !moving[v]) continue;
         Vec3 average = Vec3::Zero();
         for (int w : neighbours[v]) average += previous[w];
         average /= double(neighbours[v].size());

@@ -46,6 +46,12 @@ struct SmoothingOptions {
   /// field that best fit its quads (same centre, extents along the field's two directions)
   /// instead of its neighbours' average: the quads turn to the field, across patch sides too.
   std::vector<Vec3> triangleDirections;
+  /// With triangleDirections: a vertex moves only within two rings of a quad whose scaled
+  /// Jacobian is below this (at the start of each round), or of a quad without a field; the
+  /// sampled field-aligned grid stays as it is elsewhere, as smoothing towards the field turns
+  /// such a grid away from it (a fit per quad to one field direction, averaged over the quads
+  /// around a vertex). 0: every free vertex moves.
+  double keepGridAbove = 0;
   /// Worker threads for the per-vertex moves (0: all hardware threads); the result does not
   /// depend on it.
   int threads = 0;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <optional>
 #include <stdexcept>
 
@@ -65,6 +66,10 @@ namespace {
 /// The smoothing options of a pass: with a field, towards it (per layout triangle, the field
 /// of the input face it lies in).
 /// Not in the layout patches marked in `meanValuePatches` (if given), which are smoothed plainly.
+/// The scaled Jacobian below which a quad of a field-aligned grid is smoothed (with the
+/// vertices two rings around it) when the stage keeps that grid elsewhere (keepFieldGrid).
+constexpr double kKeepFieldGridAbove = 0.5;
+
 SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOptions& options,
                               const std::vector<char>* meanValuePatches = nullptr) {
   SmoothingOptions smoothing = options.smoothing;
@@ -77,6 +82,7 @@ SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOp
       if (f >= 0 && f < int(options.fieldDirections.size())) smoothing.triangleDirections[t] = options.fieldDirections[f];
     }
   }
+  if (!options.fieldDirections.empty() && options.keepFieldGrid) smoothing.keepGridAbove = kKeepFieldGridAbove;
   return smoothing;
 }
 
@@ -146,6 +152,7 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
     c.foldsResmoothed = k == 0;
     c.foldsResampled = k == 1;
     c.foldsWithoutField = k == 2;
+    c.fieldGridKept = c.fieldGridKept && k == 1;  // the plain smoothing moves every vertex
     r = std::move(c);
     return true;
   };
@@ -219,7 +226,7 @@ QuadrangulationResult solveCounts(const PatchLayout& layout, const Quadrangulati
 struct PassCache {
   std::map<double, QuadrangulationResult> counts;
   std::map<double, std::string> failures;
-  std::map<std::pair<double, bool>, QuadrangulationResult> measured;
+  std::map<std::tuple<double, bool, bool>, QuadrangulationResult> measured;
 
   QuadrangulationResult get(const PatchLayout& layout, const QuadrangulationOptions& options) {
     const double size = options.targetEdgeLength;
@@ -253,6 +260,7 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
   }
   r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
   r.sampledPositions = r.mesh.positions;
+  r.fieldGridKept = field && options.keepFieldGrid;
   r.smoothing = smoothQuadMesh(r.mesh, layout.positions, layout.triangles,
                                smoothingFor(layout, options, field ? meanValuePatches : nullptr));
   r.report = checkQuadMesh(r.mesh);
@@ -273,8 +281,9 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
 }
 
 /// The stage, with the counts of each size computed once for all its passes.
-QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const QuadrangulationOptions& options,
+QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const QuadrangulationOptions& asked,
                                         PassCache& cache) {
+  QuadrangulationOptions options = asked;
   if (!(options.targetEdgeLength > 0)) throw std::invalid_argument("the target quad edge length must be positive");
   if (options.maxSplitRounds < 0) throw std::invalid_argument("the number of zero-chain split rounds must be >= 0");
   if (!(options.ilpTimeLimit >= 1)) throw std::invalid_argument("the side-length time limit must be at least 1 s");
@@ -331,7 +340,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   // A pass at the asked size, measured (and restored): cached, as the stage without the field
   // makes it both as the alternative below and as the first pass of its own stage.
   auto measuredPass = [&](const QuadrangulationOptions& o, std::vector<Vec3>* farPoints = nullptr) {
-    const std::pair<double, bool> key{o.targetEdgeLength, o.fieldDirections.empty()};
+    const std::tuple<double, bool, bool> key{o.targetEdgeLength, o.fieldDirections.empty(), o.keepFieldGrid};
     if (auto it = cache.measured.find(key); it != cache.measured.end()) {
       if (farPoints && it->second.mesh.numQuads() > 0)
         *farPoints = measureDeviation(it->second.mesh, surface, limit, resolution).farPoints;
@@ -347,6 +356,13 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   std::vector<Vec3> far;
   QuadrangulationResult r = measuredPass(options, options.fieldDirections.empty() ? nullptr : &far);
   if (r.mesh.numQuads() == 0) return r;  // nothing to measure
+  // The field-aligned grid, smoothed only around its poor quads, misses the bound: smoothed
+  // everywhere (which keeps quads evenly spread over curved parts), and the fallbacks below
+  // from there.
+  if (r.deviationBound > limit && !options.fieldDirections.empty() && options.keepFieldGrid) {
+    options.keepFieldGrid = false;
+    r = measuredPass(options, &far);
+  }
   // Where the field-aligned maps miss the bound (patches stretched along the field where the
   // surface curves across them, or sides sampled unevenly to follow it), first only the
   // patches near the points found too far get arc length on their sides, keeping the field
