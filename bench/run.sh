@@ -280,6 +280,38 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## The field-aligned grid smoothed only around its poor quads (issue 21, fourteenth session, 2026-12-05)
+
+Following the measurement below (smoothing everywhere undoes up to half of the alignment), the
+smoothing now moves, with a field, only the vertices within two rings of a quad whose scaled
+Jacobian is below 0.5 (or of a quad without a field); the other vertices stay where the joint
+field-aligned maps placed them. If that mesh misses the distance bound, it is smoothed
+everywhere (as before) and the other fallbacks follow from there (`quad.field_grid_kept`
+says which). Bench settings, same machine and day, before → after:
+
+| mesh | misaligned quads | per face | min scaled Jacobian | distance | grid kept |
+|---|---:|---:|---:|---:|---|
+| bunny | 9.4 → 8.0% | 1.8 → 1.7% | 0.13 → 0.13 | 0.66 → 0.81% | yes (3 patches around folds resampled) |
+| fandisk | 9.0 → 8.2% | 1.0 → 0.9% | 0.14 → 0.14 | 0.59 → 0.95% | yes |
+| eight | 9.6 → 8.0% | 2.8 → 2.8% | 0.14 → 0.17 | 0.71 → 0.76% | yes |
+| fertility | 9.6 → 8.6% | 2.2 → 2.3% | 0.10 → 0.10 | 0.80 → 0.84% | yes |
+| lilium | 28.6 → 26.0% | 13.6 → 13.3% | 0.06 → 0.06 | 0.60 → 0.60% | yes |
+| rockerarm (α 30, k 30) | 15.3 → 15.2% | 7.3 → 7.0% | 0.05 → 0.10 | 0.73 → 0.92% | yes |
+| deckel | 13.9 → 13.8% | 1.5 → 1.7% | 0.10 → 0.11 | 0.61 → 0.96% | yes |
+| aqua_center | 0.9 → 0.9% | 0.6 → 0.8% | 0.33 → 0.55 | 0.19 → 0.19% | yes |
+| joint | 0.7 → 0.7% | 0.3 → 0.3% | 0.49 → 0.71 | 0.50 → 0.90% | yes |
+| kitten | 11.9 → 11.9% | 5.2 → 5.2% | 0.12 → 0.12 | 0.91 → 0.91% | no: 1.25% kept, smoothed everywhere |
+| camelhead | 7.4 → 7.4% | 4.1 → 4.1% | 0.10 → 0.10 | 0.89 → 0.89% | no |
+| dragon | 37.0 → 37.0% | 19.4 → 19.4% | −0.49 | 0.86% | no: the stage without the field (13 folds) |
+
+No mesh gets a fold. The cost is distance: the kept grids are farther from the surface (fandisk
+0.95% against 0.59%), still within the 1% bound, which the stage checks. The bunny's kept grid
+folded quads the untangling left, and the patches around them were sampled again with
+mean-value interiors (the existing fold fallback): 8.0%, where the grid kept without folds was
+4.6%. What is still open: the kitten's kept grid misses the bound on one ridge (1.25%, an
+independent dense sampling puts the far surface points at x ≈ 10–12.5 along one crease), so it
+falls back to smoothing everywhere; smoothing around the far points instead would keep its grid.
+
 ## What the smoothing does to the field-aligned quads; conformal corner scales tried (issue 21, fourteenth session, 2026-12-05)
 
 Measured on this machine (2 cores, AMD EPYC, shared VM), bench settings, fields computed
