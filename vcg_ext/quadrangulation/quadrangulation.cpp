@@ -63,13 +63,13 @@ int dissolveTwoValentVertices(QuadMesh& mesh) {
 
 namespace {
 
-/// The smoothing options of a pass: with a field, towards it (per layout triangle, the field
-/// of the input face it lies in).
-/// Not in the layout patches marked in `meanValuePatches` (if given), which are smoothed plainly.
 /// The scaled Jacobian below which a quad of a field-aligned grid is smoothed (with the
 /// vertices two rings around it) when the stage keeps that grid elsewhere (keepFieldGrid).
 constexpr double kKeepFieldGridAbove = 0.5;
 
+/// The smoothing options of a pass: with a field, towards it (per layout triangle, the field
+/// of the input face it lies in).
+/// Not in the layout patches marked in `meanValuePatches` (if given), which are smoothed plainly.
 SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOptions& options,
                               const std::vector<char>* meanValuePatches = nullptr) {
   SmoothingOptions smoothing = options.smoothing;
