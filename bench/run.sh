@@ -310,7 +310,9 @@ folded quads the untangling left, and the patches around them were sampled again
 mean-value interiors (the existing fold fallback): 8.0%, where the grid kept without folds was
 4.6%. What is still open: the kitten's kept grid misses the bound on one ridge (1.25%, an
 independent dense sampling puts the far surface points at x ≈ 10–12.5 along one crease), so it
-falls back to smoothing everywhere; smoothing around the far points instead would keep its grid.
+falls back to smoothing everywhere. Tried and dropped: smoothing around the far points as
+well (within two quad edges, up to three rounds) keeps the kitten's grid within the bound, but
+gains only 11.9 → 11.8%; the camelhead still falls back.
 
 ## What the smoothing does to the field-aligned quads; conformal corner scales tried (issue 21, fourteenth session, 2026-12-05)
 
