@@ -236,6 +236,7 @@ TEST(Layout, TJunctionsEndOnTheirSeparatrixOnTwoKittens) {
   ASSERT_EQ(two.numComponents(), 2);
   LayoutParameters lp;
   lp.completionTrials = 0;  // the t-junction passes are what this is about
+  lp.coverageRepair = false;
   auto s = solve(two, generateCrossField(two), {}, lp);
   checkLayoutInvariants(*s);
   EXPECT_GT(s->layout.tJunctions, 0);
@@ -393,6 +394,92 @@ TEST(LayoutCompletion, CoverageFirstWeightsPreferTwoSeparatricesToOneShortOne) {
   EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{0, 1}));
 }
 
+#include "layout/coverage_repair.h"
+
+namespace {
+/// Ports 0..3: arcs 0 (0–1) and 1 (2–3) of length 1, arc 2 (1–2) of length 0.1, each in a face
+/// of its own (no tangential pair), unless `conflict` puts arcs 0 and 1 along one chord.
+SeparatrixGraph threeArcs(bool conflict) {
+  SeparatrixGraph h;
+  auto arc = [&](int a, int b, double length, PathSegment segment) {
+    CandidateSeparatrix c;
+    c.portA = a;
+    c.portB = b;
+    c.length = length;
+    c.path.segments = {segment};
+    h.arcs.push_back(c);
+  };
+  arc(0, 1, 1.0, {0, 0, 0.5, 1.5});
+  arc(2, 3, 1.0, conflict ? PathSegment{0, 2, 1.5, 0.5} : PathSegment{1, 0, 0.5, 1.5});
+  arc(1, 2, 0.1, {2, 0, 0.5, 1.5});
+  h.arcsAtPort = {{0}, {0, 2}, {1, 2}, {1}};
+  classifyCrossings(makeSphere(1), h);
+  return h;
+}
+}  // namespace
+
+TEST(CoverageRepair, ANeighbourhoodSelectedAgainCoversTheDanglingPorts) {
+  // Eq. 4 takes the short arc 2 alone and leaves ports 0 and 3 dangling; the repair frees arc 2
+  // (it shares port 1 with arc 0) and selects arcs 0 and 1: two more ports covered.
+  const SeparatrixGraph h = threeArcs(false);
+  ASSERT_TRUE(h.tangentialPairs.empty());
+  std::vector<int> selected = selectSeparatrices(h, {}, 10).selected;
+  ASSERT_EQ(selected, (std::vector<int>{2}));
+  const CoverageRepairReport report = repairCoverage(h, selected, 10, 50);
+  EXPECT_EQ(selected, (std::vector<int>{0, 1}));
+  EXPECT_EQ(report.portsGained, 2);
+  EXPECT_EQ(report.accepted, 1);
+  EXPECT_GE(report.programs, 1);
+}
+
+TEST(CoverageRepair, ASelectionThatCannotCoverMoreIsKept) {
+  // Arcs 0 and 1 run along one chord (tangential): no selection covers more than two ports,
+  // and the repair keeps Eq. 4's arc 2 rather than trading it for another arc of two ports.
+  const SeparatrixGraph h = threeArcs(true);
+  ASSERT_EQ(h.tangentialPairs, (std::vector<std::pair<int, int>>{{0, 1}}));
+  std::vector<int> selected = selectSeparatrices(h, {}, 10).selected;
+  ASSERT_EQ(selected, (std::vector<int>{2}));
+  const CoverageRepairReport report = repairCoverage(h, selected, 10, 50);
+  EXPECT_EQ(selected, (std::vector<int>{2}));
+  EXPECT_EQ(report.portsGained, 0);
+  EXPECT_EQ(report.accepted, 0);
+}
+
+TEST(CoverageRepair, CoverageFirstSelectionBreaksTiesByTotalLengthWithinItsScope) {
+  // Ports 0..3, every pair joined by an arc in a face of its own: three perfect matchings
+  // cover all four ports; the shortest in all is {0–2, 1–3} (0.5 + 0.5), though Eq. 4 alone
+  // would prefer {0–1, 2–3} (1/0.1 + 1/5 against 1/0.5 + 1/0.5).
+  SeparatrixGraph h;
+  auto arc = [&](int a, int b, double length) {
+    CandidateSeparatrix c;
+    c.portA = a;
+    c.portB = b;
+    c.length = length;
+    c.path.segments = {{int(h.arcs.size()), 0, 0.5, 1.5}};
+    h.arcs.push_back(c);
+    h.arcsAtPort.resize(4);
+    h.arcsAtPort[a].push_back(int(h.arcs.size()) - 1);
+    h.arcsAtPort[b].push_back(int(h.arcs.size()) - 1);
+  };
+  arc(0, 1, 0.1);  // 0
+  arc(2, 3, 5.0);  // 1
+  arc(0, 2, 0.5);  // 2
+  arc(1, 3, 0.5);  // 3
+  arc(0, 3, 2.0);  // 4
+  arc(1, 2, 2.0);  // 5
+  classifyCrossings(makeSphere(1), h);
+  EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{0, 1}));
+  SelectionScope scope;
+  scope.coverageFirst = true;
+  EXPECT_EQ(selectSeparatricesIn(h, scope, 10).selected, (std::vector<int>{2, 3}));
+  // Without arc 3, the shortest cover left is {4, 5} (2 + 2), not {0, 1} (5.1).
+  scope.arcAllowed = {1, 1, 1, 0, 1, 1};
+  EXPECT_EQ(selectSeparatricesIn(h, scope, 10).selected, (std::vector<int>{4, 5}));
+  // Ports 2 and 3 taken: only arc 0 is left.
+  scope.portFree = {1, 1, 0, 0};
+  EXPECT_EQ(selectSeparatricesIn(h, scope, 10).selected, (std::vector<int>{0}));
+}
+
 TEST(LayoutCompletion, ASeparatrixIsTangentialToItselfOnlyOnTheRoundedBox) {
   // The rounded box's separatrices meet only at its corners (orthogonally, or not at all):
   // each one's only tangential blocker is itself.
@@ -404,23 +491,57 @@ TEST(LayoutCompletion, ASeparatrixIsTangentialToItselfOnlyOnTheRoundedBox) {
 }
 
 TEST(LayoutCompletion, KittenGetsAConformingLayout) {
-  // The solving cycle alone leaves two dangling ports (two t-junctions); the completion frees
-  // the separatrices between them and matches every port.
+  // Eq. 4 and the solving cycle alone leave two dangling ports (two t-junctions); the
+  // completion frees the separatrices between them and matches every port.
   std::string kitten = test::sharedMesh("kitten.obj");
   if (kitten.empty()) GTEST_SKIP() << "../shared/data/meshes/kitten.obj is absent";
   const SurfaceMesh mesh = loadMesh(kitten);
   const CrossField field = generateCrossField(mesh);
   LayoutParameters without;
   without.completionTrials = 0;
+  without.coverageRepair = false;
   auto before = solve(mesh, field, {}, without);
   EXPECT_GT(before->layout.tJunctions, 0);
-  auto after = solve(mesh, field);
+  LayoutParameters completionOnly;
+  completionOnly.coverageRepair = false;
+  auto after = solve(mesh, field, {}, completionOnly);
   checkLayoutInvariants(*after);
   EXPECT_EQ(after->layout.tJunctions, 0);
   EXPECT_EQ(after->layout.danglingAfterCycle, 0);
   EXPECT_TRUE(after->layout.unresolvedPorts.empty());
   EXPECT_GE(after->layout.completion.accepted, 1);
   EXPECT_LT(after->layout.completion.tJunctionsAfter, after->layout.completion.tJunctionsBefore);
+  for (const auto& p : after->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
+  // By default the coverage repair already covers every port of the first program's selection.
+  auto repaired = solve(mesh, field);
+  checkLayoutInvariants(*repaired);
+  EXPECT_EQ(repaired->layout.tJunctions, 0);
+  EXPECT_EQ(repaired->layout.danglingAfterCycle, 0);
+  EXPECT_GE(repaired->layout.coverageRepair.portsGained, 2);
+  EXPECT_EQ(repaired->layout.completion.tJunctionsBefore, 0) << "nothing left for the completion";
+}
+
+TEST(CoverageRepair, FertilityAtThePapersAlphaAndKIsConforming) {
+  // At α 30, k 30 (the paper's Table 1) Eq. 4, the solving cycle and the completion leave two
+  // ports of fertility's field at t-junctions: every path between them runs along 8 or more
+  // separatrices. Covering ports first around them in H matches them all.
+  FCQL_REQUIRE_SHARED(fertility, "fertility.obj");
+  const SurfaceMesh mesh = loadMesh(fertility);
+  const CrossField field = generateCrossField(mesh);
+  TracingParameters tp;
+  tp.alpha = 30;
+  tp.k = 30;
+  LayoutParameters without;
+  without.coverageRepair = false;
+  auto before = solve(mesh, field, tp, without);
+  EXPECT_GT(before->layout.tJunctions, 0) << "fertility's layout is conforming without the repair: pick another case";
+  auto after = solve(mesh, field, tp);
+  checkLayoutInvariants(*after);
+  EXPECT_EQ(after->layout.tJunctions, 0);
+  EXPECT_EQ(after->layout.danglingAfterCycle, 0);
+  EXPECT_TRUE(after->layout.leftPorts.empty());
+  EXPECT_GE(after->layout.coverageRepair.portsGained, 2);
+  EXPECT_LE(after->patches.numPatches(), 160) << "issue 20: at most 1.25 times the paper's 128 patches";
   for (const auto& p : after->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
 }
 

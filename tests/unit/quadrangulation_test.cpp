@@ -52,11 +52,12 @@ QuadrangulationOptions fieldAlignedOptions(const Quadrangulated& q, double maxDe
   return options;
 }
 
-/// The layout without its completion step: it keeps the t-junctions (and zero chains) that
-/// the tests of their handling need.
+/// The layout without its coverage repair and completion steps: it keeps the t-junctions (and
+/// zero chains) that the tests of their handling need.
 LayoutParameters withTJunctions() {
   LayoutParameters p;
   p.completionTrials = 0;
+  p.coverageRepair = false;
   return p;
 }
 

@@ -232,6 +232,14 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
   // 1. The first 0-1 program on all candidates.
   SelectionResult first = selectSeparatrices(candidates, {}, params.ilpTimeLimit, params.ilpStallNodes);
   noteSelection(layout, first);
+  // 1b. More ports covered: the neighbourhoods of the dangling ports selected again, coverage first.
+  if (params.coverageRepair) {
+    layout.coverageRepair = repairCoverage(candidates, first.selected, params.ilpTimeLimit, params.ilpStallNodes);
+    layout.ilpSeconds += layout.coverageRepair.seconds;
+    layout.ilpStalled += layout.coverageRepair.stalledParts;
+    layout.ilpTimeLimited += layout.coverageRepair.timeLimitedParts;
+    if (layout.coverageRepair.timeLimitedParts > 0) layout.ilpTimeLimitHit = true;
+  }
   for (int a : first.selected) {
     const auto& c = candidates.arcs[a];
     layout.separatrices.push_back({LayoutSeparatrix::Full, c.portA, c.portB, 1, c.path});

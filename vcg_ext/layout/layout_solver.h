@@ -2,6 +2,8 @@
 // t-junctions and border connections (§4.2 end, §4.3).
 //
 // 1. Select separatrices from the candidates H with the relaxed 0-1 program.
+// 1b. Coverage repair (coverage_repair.h): around each port the program left dangling, a
+//    neighbourhood of H is selected again with covering ports first; kept where it covers more.
 // 2. Solving cycle: freeze the selection as barriers, search again from the dangling ports
 //    (sinks only at dangling ports), select among the new candidates, add; repeat until
 //    nothing new is added.
@@ -16,6 +18,7 @@
 //    (removeDeadEnds).
 #pragma once
 
+#include "layout/coverage_repair.h"
 #include "layout/separatrix_selection.h"
 #include "tracing/separatrix_graph.h"
 
@@ -50,6 +53,7 @@ struct LayoutParameters {
   /// cycle on the ports it frees, and a propagation to count the t-junctions if fewer ports are
   /// left dangling): a bound in work, not time. 0 leaves step 2b out.
   int completionTrials = 24;
+  bool coverageRepair = true;  ///< step 1b (off: the first program's selection as Eq. 4 leaves it)
   bool propagate = true;     ///< step 3
 
   /// Throws std::invalid_argument naming the parameter.
@@ -90,6 +94,7 @@ struct Layout {
   int ilpStalled = 0;             ///< parts of 0-1 programs stopped at the stall limit
   int ilpTimeLimited = 0;         ///< parts the safety time limit cut short
   std::vector<std::string> messages; ///< solver notes worth logging
+  CoverageRepairReport coverageRepair;  ///< step 1b
   CompletionReport completion;
   double ilpSeconds = 0, cycleTracingSeconds = 0, propagationSeconds = 0, completionSeconds = 0;
 };

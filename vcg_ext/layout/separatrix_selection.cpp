@@ -57,9 +57,11 @@ struct SelectionProgram {
 /// Step 1: the variables (arcs between free ports, weighted by mean length / length) and the
 /// rows: Eq. 2 per port, Eq. 3 as conflict cliques per triangle (every tangential pair meets
 /// in some triangle, so the cliques cover them all), without the rows inside another.
-SelectionProgram buildProgram(const SeparatrixGraph& h, const std::vector<char>& portFree) {
+SelectionProgram buildProgram(const SeparatrixGraph& h, const SelectionScope& scope) {
   SelectionProgram program;
+  const std::vector<char>& portFree = scope.portFree;
   auto free = [&](int p) { return portFree.empty() || (p >= 0 && p < int(portFree.size()) && portFree[p]); };
+  auto allowed = [&](int i) { return scope.arcAllowed.empty() || scope.arcAllowed.at(i) != 0; };
   // Scale the objective so that coefficients are near 1 whatever the mesh units.
   double meanLength = 0;
   for (const auto& a : h.arcs) meanLength += a.length;
@@ -68,10 +70,24 @@ SelectionProgram buildProgram(const SeparatrixGraph& h, const std::vector<char>&
   std::vector<int>& arcOf = program.arcOf;
   for (int i = 0; i < int(h.arcs.size()); ++i) {
     const auto& a = h.arcs[i];
-    if (!free(a.portA) || !free(a.portB) || !(a.length > 0)) continue;
+    if (!free(a.portA) || !free(a.portB) || !allowed(i) || !(a.length > 0)) continue;
     variableOf[i] = int(arcOf.size());
     arcOf.push_back(i);
     program.weight.push_back(meanLength / a.length);
+  }
+  if (scope.coverageFirst && !arcOf.empty()) {
+    // Each arc weighs 1 + ε · (longest − its length): among selections of as many arcs, the
+    // shortest in all wins. A selection holds at most one arc per two ports of its arcs, so its
+    // length part stays below (ports / 2 + 1) · longest · ε, half an arc.
+    std::vector<char> seen(h.arcsAtPort.size(), 0);
+    int ports = 0;
+    for (int i : arcOf)
+      for (int p : {h.arcs[i].portA, h.arcs[i].portB})
+        if (p >= 0 && p < int(seen.size()) && !seen[p]) seen[p] = 1, ++ports;
+    double longest = 0;
+    for (int i : arcOf) longest = std::max(longest, h.arcs[i].length);
+    const double epsilon = 1.0 / (2.0 * (ports / 2 + 1) * longest);
+    for (std::size_t v = 0; v < arcOf.size(); ++v) program.weight[v] = 1 + epsilon * (longest - h.arcs[arcOf[v]].length);
   }
   const int n = int(arcOf.size());
   std::vector<std::vector<int>>& rows = program.rows;
@@ -230,9 +246,16 @@ void reportStatus(const PartsTally& tally, long stallNodes, SelectionResult& out
 
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
                                    long stallNodes) {
+  SelectionScope scope;
+  scope.portFree = portFree;
+  return selectSeparatricesIn(h, scope, timeLimitSeconds, stallNodes);
+}
+
+SelectionResult selectSeparatricesIn(const SeparatrixGraph& h, const SelectionScope& scope, double timeLimitSeconds,
+                                   long stallNodes) {
   SelectionResult out;
   const auto start = std::chrono::steady_clock::now();  // the program's construction counts too
-  SelectionProgram program = buildProgram(h, portFree);
+  SelectionProgram program = buildProgram(h, scope);
   out.variables = program.numVariables();
   out.dominated = leaveOutDominated(program);
   out.constraints = int(program.rows.size());

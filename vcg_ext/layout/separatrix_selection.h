@@ -32,4 +32,16 @@ struct SelectionResult {
 SelectionResult selectSeparatrices(const SeparatrixGraph& h, const std::vector<char>& portFree, double timeLimitSeconds,
                                    long stallNodes = 0);
 
+/// Which arcs a selection may use and how it weighs them.
+struct SelectionScope {
+  std::vector<char> portFree;    ///< as above (empty: all ports)
+  std::vector<char> arcAllowed;  ///< per arc of H, 1 if it may be selected (empty: all)
+  /// Each arc weighs 1 + ε · (longest length − its length), with ε so small that the length
+  /// part of any selection is below half an arc: covering more ports comes first, then the
+  /// shortest in all (the paper's Completeness made worth more than any length saving).
+  bool coverageFirst = false;
+};
+SelectionResult selectSeparatricesIn(const SeparatrixGraph& h, const SelectionScope& scope, double timeLimitSeconds,
+                                   long stallNodes = 0);
+
 }  // namespace fcql

@@ -37,6 +37,11 @@ void describe(const LayoutStageResult& r, StageLog& log) {
   const Layout& l = r.layout;
   const PatchLayout& p = r.patches;
   for (const std::string& m : l.messages) log.note(m);
+  const CoverageRepairReport& cr = l.coverageRepair;
+  if (cr.programs > 0)
+    log.info("Coverage repair: " + std::to_string(cr.portsGained) + " more ports covered by the first program's selection (" +
+             std::to_string(cr.accepted) + " of " + std::to_string(cr.programs) +
+             " neighbourhoods of dangling ports selected again, covering ports first)");
   const CompletionReport& c = l.completion;
   if (c.trials > 0)
     log.info("Completion: t-junctions and unresolved ports " + std::to_string(c.tJunctionsBefore) + " -> " +
@@ -89,6 +94,9 @@ void record(const LayoutStageResult& r, const PipelineParameters& p, Figures& f)
   f.set("layout.ilp_time_limit_hit", l.ilpTimeLimitHit);
   f.set("layout.ilp_stalled", l.ilpStalled);
   f.set("layout.ilp_time_limited", l.ilpTimeLimited);
+  f.set("layout.coverage_repair_programs", l.coverageRepair.programs);
+  f.set("layout.coverage_repair_accepted", l.coverageRepair.accepted);
+  f.set("layout.coverage_repair_ports", l.coverageRepair.portsGained);
   f.set("layout.completion_trials", l.completion.trials);
   f.set("layout.completion_accepted", l.completion.accepted);
   f.set("layout.completion_freed", l.completion.freedSeparatrices);
