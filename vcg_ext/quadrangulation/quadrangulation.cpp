@@ -369,6 +369,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   // inside; then, if that is not enough, mean-value coordinates inside as well. The other
   // patches keep their field-aligned grids. A few rounds each, as the points too far may move
   // on to the next patches. Kept if it meets the bound.
+  std::optional<QuadrangulationResult> patchwise;  // a fallback that touched most patches
   if (r.deviationBound > limit && !options.fieldDirections.empty()) {
     std::vector<char> marks(layout.patches.size(), kFieldPatch);
     QuadrangulationResult local = r;
@@ -395,13 +396,21 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
       }
       if (local.deviationBound <= limit) break;
     }
-    if (local.deviationBound <= limit) r = std::move(local);
+    // A fallback that had to touch most patches is no longer local: the field-aligned grid
+    // with smaller quads (the refinements below) follows the field far better (kitten: 10.4%
+    // of the quads off it, against 26.7% with 69 of its 70 patches' sides by arc length). It
+    // stays the answer if the refinements do not meet the bound.
+    if (local.deviationBound <= limit) {
+      const std::size_t touched = std::size_t(local.boundArcLengthPatches + local.boundMeanValuePatches);
+      if (2 * touched <= layout.patches.size()) r = std::move(local);
+      else patchwise = std::move(local);
+    }
   }
   // Still too far: the stage without the field, whose grids follow the patches' outlines, is
   // tried at the same size before any refinement, and kept (with its own refinements and fold
   // repairs) if it meets the bound there.
   QuadrangulationOptions active = options;
-  if (r.deviationBound > limit && !options.fieldDirections.empty()) {
+  if (r.deviationBound > limit && !options.fieldDirections.empty() && !patchwise) {
     QuadrangulationOptions plain = options;
     plain.fieldDirections.clear();
     try {
@@ -445,6 +454,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
       break;
     }
   }
+  if (r.deviationBound > limit && patchwise) r = std::move(*patchwise);
   // The whole stage without the field, for the two fallbacks below: run at most once (none
   // if neither needs it); null if it fails.
   std::optional<QuadrangulationResult> withoutField;
