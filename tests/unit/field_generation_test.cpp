@@ -320,20 +320,6 @@ TEST(FieldGeneration, FertilityHasAFewTensOfSingularities) {
   EXPECT_LE(a.numInteriorSingularities(), 40);
 }
 
-/// Gaussian noise of standard deviation `sigma` on every vertex (mt19937 and Box–Muller, the
-/// same numbers with any standard library).
-SurfaceMesh withNoise(const SurfaceMesh& m, double sigma, unsigned seed) {
-  std::mt19937 rng(seed);
-  auto uniform = [&] { return (double(rng()) + 0.5) / 4294967296.0; };
-  std::vector<Vec3> p = m.positions();
-  for (Vec3& x : p)
-    for (int k = 0; k < 3; ++k) {
-      double g = std::sqrt(-2 * std::log(uniform())) * std::cos(2 * kPi * uniform());
-      x[k] += sigma * g;
-    }
-  return SurfaceMesh(p, m.faces());
-}
-
 // Issue 20: noise of 0.05% of the bounding-box diagonal on kitten's vertices changes the
 // number of singularities of the computed field by at most 10% (at --field-scale 0 it went
 // from 30 to 32–36).
@@ -343,7 +329,7 @@ TEST(FieldGeneration, KittenKeepsItsSingularitiesUnderNoise) {
   const int clean = analyzeField(m, generateCrossField(m)).numInteriorSingularities();
   EXPECT_GT(clean, 0);
   for (unsigned seed : {1u, 2u, 3u}) {
-    SurfaceMesh noisy = withNoise(m, 0.0005 * m.boundingBoxDiagonal(), seed);
+    SurfaceMesh noisy = test::withNoise(m, 0.0005 * m.boundingBoxDiagonal(), seed);
     FieldAnalysis a = analyzeField(noisy, generateCrossField(noisy));
     EXPECT_EQ(a.indexSumQuarters(), 4 * noisy.eulerCharacteristic());
     EXPECT_LE(std::abs(a.numInteriorSingularities() - clean), 0.1 * clean)

@@ -480,6 +480,23 @@ TEST(CoverageRepair, CoverageFirstSelectionBreaksTiesByTotalLengthWithinItsScope
   EXPECT_EQ(selectSeparatricesIn(h, scope, 10).selected, (std::vector<int>{0}));
 }
 
+TEST(Layout, KittenStaysConformingUnderNoise) {
+  // Issue 20: Gaussian noise of 0.05% of the bounding-box diagonal on the vertices leaves the
+  // layout conforming (its singularities: FieldGeneration.KittenKeepsItsSingularitiesUnderNoise).
+  FCQL_REQUIRE_SHARED(kitten, "kitten.obj");
+  const SurfaceMesh clean = loadMesh(kitten);
+  for (unsigned seed : {1u, 2u, 3u}) {
+    SurfaceMesh noisy = test::withNoise(clean, 0.0005 * clean.boundingBoxDiagonal(), seed);
+    const CrossField field = generateCrossField(noisy);
+    auto s = solve(std::move(noisy), field);
+    checkLayoutInvariants(*s);
+    EXPECT_EQ(s->layout.tJunctions, 0) << "seed " << seed;
+    EXPECT_EQ(s->layout.danglingAfterCycle, 0) << "seed " << seed;
+    EXPECT_TRUE(s->layout.unresolvedPorts.empty()) << "seed " << seed;
+    for (const auto& p : s->patches.patches) EXPECT_TRUE(p.valid) << "seed " << seed << ": " << p.problem;
+  }
+}
+
 TEST(LayoutCompletion, ASeparatrixIsTangentialToItselfOnlyOnTheRoundedBox) {
   // The rounded box's separatrices meet only at its corners (orthogonally, or not at all):
   // each one's only tangential blocker is itself.

@@ -8,11 +8,13 @@
 #include "mesh/closest_point_index.h"
 #include "mesh/mesh_io.h"
 #include "mesh/surface_mesh.h"
+#include "util/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <random>
 #include <string>
 
 namespace fcql::test {
@@ -32,6 +34,20 @@ inline double sampledOneWayDistance(const std::vector<Vec3>& P, const std::vecto
         worst = std::max(worst, other.closest(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)).distance);
   }
   return worst;
+}
+
+/// Gaussian noise of standard deviation `sigma` on every vertex (mt19937 and Box–Muller, the
+/// same numbers with any standard library).
+inline SurfaceMesh withNoise(const SurfaceMesh& m, double sigma, unsigned seed) {
+  std::mt19937 rng(seed);
+  auto uniform = [&] { return (double(rng()) + 0.5) / 4294967296.0; };
+  std::vector<Vec3> p = m.positions();
+  for (Vec3& x : p)
+    for (int k = 0; k < 3; ++k) {
+      double g = std::sqrt(-2 * std::log(uniform())) * std::cos(2 * kPi * uniform());
+      x[k] += sigma * g;
+    }
+  return SurfaceMesh(p, m.faces());
 }
 
 /// Absolute path of a file in ../shared/data/meshes, or "" if the shared folder is absent.
