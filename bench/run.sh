@@ -347,6 +347,12 @@ quads still come from the stage without the field (8 folded, 13 before) and are 
 (69 zero-chain splits in 2 rounds, against 59 in 5), 43.0% misaligned. Lilium is unchanged: its
 two t-junction ports reach neither the border nor another port without running along others.
 
+Noise (Gaussian, σ = 0.05% of the bounding-box diagonal, seeds 1–3, numpy's generator), layout at
+the bench's α and k, singularities / patches / t-junctions: kitten (24 clean) 24/73/0, 24/62/0,
+24/88/0; bunny (28) 26/69/0, 28/68/0, 30/91/2; fertility (38) 38/121/0, 36/99/0, 36/99/0. The
+singularities stay within 10%; the layouts stay conforming but for the bunny's third seed. The
+kitten case is a unit test (`Layout.KittenStaysConformingUnderNoise`, with the tests' own noise).
+
 ## The field-aligned grid smoothed only around its poor quads (issue 21, fourteenth session, 2026-12-05)
 
 Following the measurement below (smoothing everywhere undoes up to half of the alignment), the
