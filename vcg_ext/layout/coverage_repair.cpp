@@ -27,7 +27,9 @@ public:
     for (int c = 0; c < int(h.tangentialCliques.size()); ++c)
       for (int a : h.tangentialCliques[c]) cliquesOf_[a].push_back(c);
     isSelected_.assign(h.arcs.size(), 0);
+    changedAt_.assign(h.arcs.size(), 0);
     portUsed_.assign(h.arcsAtPort.size(), 0);
+    failedAt_.assign(h.arcsAtPort.size(), -1);
     for (int a : selected) setSelected(a, 1);
   }
 
@@ -92,11 +94,19 @@ public:
       SelectionScope scope;
       scope.coverageFirst = true;
       scope.arcAllowed.assign(h_.arcs.size(), 0);
+      int lastChange = 0;  // the latest acceptance that flipped an arc this program depends on
       for (int a : arcs) {
         bool blocked = false;
-        forEachConflict(a, [&](int c) { blocked = blocked || (isSelected_[c] && !inFreed[c]); });
+        lastChange = std::max(lastChange, changedAt_[a]);
+        forEachConflict(a, [&](int c) {
+          blocked = blocked || (isSelected_[c] && !inFreed[c]);
+          lastChange = std::max(lastChange, changedAt_[c]);
+        });
         scope.arcAllowed[a] = !blocked;
       }
+      // A port that failed before, with nothing it depends on changed since: the same program,
+      // the same answer.
+      if (seeds.size() == 1 && failedAt_[seeds[0]] >= lastChange) continue;
       scope.portFree.assign(portUsed_.size(), 0);
       for (int p = 0; p < int(portUsed_.size()); ++p) scope.portFree[p] = !portUsed_[p];
       for (int c : freed) {
@@ -116,7 +126,11 @@ public:
         if (!growth.keepBest) break;
       }
     }
-    if (bestGain <= 0) return false;
+    if (bestGain <= 0) {
+      if (seeds.size() == 1) failedAt_[seeds[0]] = epoch_;
+      return false;
+    }
+    ++epoch_;
     for (int c : bestFreed) setSelected(c, 0);
     for (int a : bestSelected) setSelected(a, 1);
     ++report.accepted;
@@ -137,6 +151,7 @@ private:
   }
 
   void setSelected(int a, char on) {
+    if (isSelected_[a] != on) changedAt_[a] = epoch_;
     isSelected_[a] = on;
     for (int p : {h_.arcs[a].portA, h_.arcs[a].portB})
       if (p >= 0) portUsed_[p] = on;
@@ -145,6 +160,10 @@ private:
   const SeparatrixGraph& h_;
   std::vector<std::vector<int>> cliquesOf_;
   std::vector<char> isSelected_, portUsed_;
+  /// Acceptances so far; per arc, the one that last flipped it (0: none); per port, the count
+  /// when its own neighbourhoods last covered nothing more (−1: never).
+  int epoch_ = 0;
+  std::vector<int> changedAt_, failedAt_;
 };
 
 }  // namespace
