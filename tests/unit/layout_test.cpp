@@ -370,23 +370,31 @@ TEST(Layout, SinksShownOutOfReachStayOutOfLaterSearches) {
 
 #include "layout/layout_completion.h"
 
+namespace {
+/// Adds to `h` a candidate joining ports a and b (and to both ports' lists), along `segment`,
+/// or by default in a face of its own (no conflict with the others).
+void addArc(SeparatrixGraph& h, int a, int b, double length, const PathSegment* segment = nullptr) {
+  CandidateSeparatrix c;
+  c.portA = a;
+  c.portB = b;
+  c.length = length;
+  c.path.segments = {segment ? *segment : PathSegment{int(h.arcs.size()), 0, 0.5, 1.5}};
+  h.arcs.push_back(c);
+  h.arcsAtPort.resize(std::max<std::size_t>(h.arcsAtPort.size(), std::max(a, b) + 1));
+  h.arcsAtPort[a].push_back(int(h.arcs.size()) - 1);
+  h.arcsAtPort[b].push_back(int(h.arcs.size()) - 1);
+}
+}  // namespace
+
 TEST(LayoutCompletion, CoverageFirstWeightsPreferTwoSeparatricesToOneShortOne) {
   // Ports 0..3. Arc 0 joins 0–1 and arc 1 joins 2–3 (length 1 each); arc 2 joins 1–2 and is
   // ten times shorter. Eq. 4 takes arc 2 alone (weight 10 against 1 + 1), which leaves ports 0
   // and 3 dangling; covering first takes arcs 0 and 1.
   SeparatrixGraph h;
-  auto arc = [&](int a, int b, double length) {
-    CandidateSeparatrix c;
-    c.portA = a;
-    c.portB = b;
-    c.length = length;
-    c.path.segments = {{int(h.arcs.size()), 0, 0.5, 1.5}};  // a face of its own: no conflict
-    h.arcs.push_back(c);
-  };
-  arc(0, 1, 1.0);
-  arc(2, 3, 1.0);
-  arc(1, 2, 0.1);
-  h.arcsAtPort = {{0}, {0, 2}, {1, 2}, {1}};
+  addArc(h, 0, 1, 1.0);
+  addArc(h, 2, 3, 1.0);
+  addArc(h, 1, 2, 0.1);
+  ASSERT_EQ(h.arcsAtPort, (std::vector<std::vector<int>>{{0}, {0, 2}, {1, 2}, {1}}));
   classifyCrossings(makeSphere(1), h);
   ASSERT_TRUE(h.tangentialPairs.empty());
   EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{2}));
@@ -401,18 +409,10 @@ namespace {
 /// of its own (no tangential pair), unless `conflict` puts arcs 0 and 1 along one chord.
 SeparatrixGraph threeArcs(bool conflict) {
   SeparatrixGraph h;
-  auto arc = [&](int a, int b, double length, PathSegment segment) {
-    CandidateSeparatrix c;
-    c.portA = a;
-    c.portB = b;
-    c.length = length;
-    c.path.segments = {segment};
-    h.arcs.push_back(c);
-  };
-  arc(0, 1, 1.0, {0, 0, 0.5, 1.5});
-  arc(2, 3, 1.0, conflict ? PathSegment{0, 2, 1.5, 0.5} : PathSegment{1, 0, 0.5, 1.5});
-  arc(1, 2, 0.1, {2, 0, 0.5, 1.5});
-  h.arcsAtPort = {{0}, {0, 2}, {1, 2}, {1}};
+  const PathSegment alongArc0{0, 2, 1.5, 0.5};
+  addArc(h, 0, 1, 1.0);
+  addArc(h, 2, 3, 1.0, conflict ? &alongArc0 : nullptr);
+  addArc(h, 1, 2, 0.1);
   classifyCrossings(makeSphere(1), h);
   return h;
 }
@@ -450,23 +450,12 @@ TEST(CoverageRepair, CoverageFirstSelectionBreaksTiesByTotalLengthWithinItsScope
   // cover all four ports; the shortest in all is {0–2, 1–3} (0.5 + 0.5), though Eq. 4 alone
   // would prefer {0–1, 2–3} (1/0.1 + 1/5 against 1/0.5 + 1/0.5).
   SeparatrixGraph h;
-  auto arc = [&](int a, int b, double length) {
-    CandidateSeparatrix c;
-    c.portA = a;
-    c.portB = b;
-    c.length = length;
-    c.path.segments = {{int(h.arcs.size()), 0, 0.5, 1.5}};
-    h.arcs.push_back(c);
-    h.arcsAtPort.resize(4);
-    h.arcsAtPort[a].push_back(int(h.arcs.size()) - 1);
-    h.arcsAtPort[b].push_back(int(h.arcs.size()) - 1);
-  };
-  arc(0, 1, 0.1);  // 0
-  arc(2, 3, 5.0);  // 1
-  arc(0, 2, 0.5);  // 2
-  arc(1, 3, 0.5);  // 3
-  arc(0, 3, 2.0);  // 4
-  arc(1, 2, 2.0);  // 5
+  addArc(h, 0, 1, 0.1);  // 0
+  addArc(h, 2, 3, 5.0);  // 1
+  addArc(h, 0, 2, 0.5);  // 2
+  addArc(h, 1, 3, 0.5);  // 3
+  addArc(h, 0, 3, 2.0);  // 4
+  addArc(h, 1, 2, 2.0);  // 5
   classifyCrossings(makeSphere(1), h);
   EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{0, 1}));
   SelectionScope scope;
