@@ -3,12 +3,13 @@
 // dangling where a selection of H that covers every port exists; propagation then ends that
 // port at a t-junction. Solving the whole program with covering first instead is much slower
 // on large fields (the dragon's relaxation 25 s instead of 1 s: its weights are all nearly
-// equal). Here each dangling port gets a small neighbourhood of H instead: the arcs at the
-// port, the selected arcs they conflict with (same port or tangential crossing), the arcs at
-// those arcs' ports, and so on for a few steps. The neighbourhood's selected arcs are freed
-// and its arcs that conflict with no selected arc outside it are selected again, coverage
-// first (SelectionScope::coverageFirst, Eq. 4 breaking ties); the result is kept where it
-// covers more ports than what it replaces.
+// equal). Here the dangling ports get neighbourhoods of H instead, all of them together first,
+// then each alone: the arcs at the ports, the selected arcs they conflict with (same port or
+// tangential crossing), the arcs at those arcs' ports, and so on for a few steps. A
+// neighbourhood's selected arcs are freed and its arcs that conflict with no selected arc
+// outside it are selected again, covering ports first and then the shortest in all
+// (SelectionScope::coverageFirst); the result is kept where it covers more ports than what it
+// replaces.
 #pragma once
 
 #include "tracing/separatrix_graph.h"
