@@ -353,6 +353,13 @@ the bench's α and k, singularities / patches / t-junctions: kitten (24 clean) 2
 singularities stay within 10%; the layouts stay conforming but for the bunny's third seed. The
 kitten case is a unit test (`Layout.KittenStaysConformingUnderNoise`, with the tests' own noise).
 
+Later the same day: a port whose neighbourhood covered nothing more is not solved again until an
+arc it depends on changes (the dragon's repair 720 → 562 programs, the same selection; its 0-1
+programs 6.9 → 5.4 s), and the patch-wise distance fallback's second level (mean-value
+interiors) now also applies to patches that already had arc-length sides (it never did: the
+marks were compared by value, and kMeanValuePatch < kArcLengthSides). No bench mesh reaches that
+level; the table above is the run after both, with the same quality figures.
+
 ## The field-aligned grid smoothed only around its poor quads (issue 21, fourteenth session, 2026-12-05)
 
 Following the measurement below (smoothing everywhere undoes up to half of the alignment), the

@@ -44,7 +44,8 @@ inline SurfaceMesh withNoise(const SurfaceMesh& m, double sigma, unsigned seed) 
   std::vector<Vec3> p = m.positions();
   for (Vec3& x : p)
     for (int k = 0; k < 3; ++k) {
-      double g = std::sqrt(-2 * std::log(uniform())) * std::cos(2 * kPi * uniform());
+      const double u1 = uniform(), u2 = uniform();  // in this order on every compiler
+      const double g = std::sqrt(-2 * std::log(u1)) * std::cos(2 * kPi * u2);
       x[k] += sigma * g;
     }
   return SurfaceMesh(p, m.faces());

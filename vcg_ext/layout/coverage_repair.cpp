@@ -13,11 +13,12 @@ namespace {
 constexpr int kMaxSteps = 4;
 /// Passes over the dangling ports; a pass that keeps nothing ends the repair.
 constexpr int kMaxPasses = 3;
-/// A port's own neighbourhood stops growing past this many selected arcs: on the dragon (795
-/// singularities) larger ones made most of the repair's time (2–4 s per program of 150 freed
-/// arcs, against milliseconds below 64) for few more ports covered.
+/// A port's own neighbourhood is not solved once it frees more than this many selected arcs
+/// (the growth stops there): on the dragon (795 singularities) larger ones made most of the
+/// repair's time (2–4 s per program of 150 freed arcs, against milliseconds below 64) for few
+/// more ports covered.
 constexpr std::size_t kMaxFreed = 64;
-/// The neighbourhood of all dangling ports together stops growing past this many arcs (fertility
+/// The neighbourhood of all dangling ports together is not solved past this many arcs (fertility
 /// at k 30: 3,571 arcs in H, its two dangling ports covered only from a neighbourhood of 3,200).
 constexpr std::size_t kMaxJointArcs = 6000;
 
@@ -89,7 +90,10 @@ public:
       if (arcs.size() > growth.maxArcs || freed.size() > growth.maxFreed) break;
       const double left =
           timeLimitSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (left <= 0) break;
+      if (left <= 0) {  // the safety time limit: counted, as lp_solve's own stops are
+        ++report.timeLimitedParts;
+        break;
+      }
       // The arcs that conflict with no selected arc outside the neighbourhood may be chosen.
       SelectionScope scope;
       scope.coverageFirst = true;

@@ -28,8 +28,10 @@ struct CoverageRepairReport {
 };
 
 /// `selected`: arcs of `h` chosen so far (a valid packing: no port twice, no tangential pair);
-/// on return, the repaired selection, increasing. Each neighbourhood program gets what is left
-/// of `timeLimitSeconds` and `stallNodes` as selectSeparatrices does.
+/// on return, the repaired selection, increasing. Every arc of H joins two different ports (a
+/// search never ends at its own port), so one arc more covers two ports more. All the
+/// neighbourhood programs together get `timeLimitSeconds` (a safety stop: one that finds no
+/// time left counts in timeLimitedParts), each `stallNodes` as selectSeparatrices does.
 CoverageRepairReport repairCoverage(const SeparatrixGraph& h, std::vector<int>& selected, double timeLimitSeconds,
                                     long stallNodes);
 

@@ -372,6 +372,9 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   std::optional<QuadrangulationResult> patchwise;  // a fallback that touched most patches
   if (r.deviationBound > limit && !options.fieldDirections.empty()) {
     std::vector<char> marks(layout.patches.size(), kFieldPatch);
+    // How far a mark departs from the field-aligned map: arc-length sides, then mean-value
+    // interiors as well (the marks' own values are not in that order).
+    auto departure = [](char mark) { return mark == kMeanValuePatch ? 2 : mark == kArcLengthSides ? 1 : 0; };
     QuadrangulationResult local = r;
     std::vector<Vec3> localFar = far;
     for (const char level : {kArcLengthSides, kMeanValuePatch}) {
@@ -383,7 +386,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
         for (const Vec3& point : localFar) {
           const int q = quadIndex.closest(point).triangle / 2;
           const int p = q < int(local.mesh.quadPatch.size()) ? local.mesh.quadPatch[q] : -1;
-          if (p >= 0 && p < int(marks.size()) && marks[p] < level) marks[p] = level, ++marked;
+          if (p >= 0 && p < int(marks.size()) && departure(marks[p]) < departure(level)) marks[p] = level, ++marked;
         }
         if (marked == 0) break;
         try {
