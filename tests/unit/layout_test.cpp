@@ -398,8 +398,9 @@ TEST(LayoutCompletion, CoverageFirstWeightsPreferTwoSeparatricesToOneShortOne) {
   classifyCrossings(makeSphere(1), h);
   ASSERT_TRUE(h.tangentialPairs.empty());
   EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{2}));
-  weighCoverageFirst(h);
-  EXPECT_EQ(selectSeparatrices(h, {}, 10).selected, (std::vector<int>{0, 1}));
+  SelectionScope scope;
+  scope.coverageFirst = true;
+  EXPECT_EQ(selectSeparatricesIn(h, scope, 10).selected, (std::vector<int>{0, 1}));
 }
 
 #include "layout/coverage_repair.h"

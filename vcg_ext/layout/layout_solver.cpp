@@ -53,17 +53,6 @@ void nameLeftPorts(const GeodesicGraph& graph, Layout& layout) {
 
 }  // namespace
 
-void weighCoverageFirst(SeparatrixGraph& h) {
-  // Selection weighs an arc by mean length / its length. With every length raised by C, more
-  // than (arcs + 1) times all of them together, the weights differ by less than one arc's
-  // worth in any selection: covering a port more outweighs any saving in length, and among
-  // selections that cover as many, the shorter still wins.
-  double total = 0;
-  for (const auto& a : h.arcs) total += a.length;
-  const double raise = (double(h.arcs.size()) + 1) * std::max(total, 1e-12);
-  for (auto& a : h.arcs) a.length += raise;
-}
-
 BarrierSet layoutBarriers(const GeodesicGraph& graph, const Layout& layout) {
   BarrierSet b(graph.mesh().numFaces());
   for (int i = 0; i < int(layout.separatrices.size()); ++i) b.add(layout.separatrices[i].path, i);
@@ -131,8 +120,10 @@ void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutPar
     SeparatrixGraph more = buildSeparatrixGraph(graph, searches);
     layout.cycleTracingSeconds += since(start);
     if (more.arcs.empty()) break;
-    if (weights == SelectionWeights::CoverageFirst) weighCoverageFirst(more);
-    SelectionResult r = selectSeparatrices(more, free, params.ilpTimeLimit, params.ilpStallNodes);
+    SelectionScope scope;
+    scope.portFree = free;
+    scope.coverageFirst = weights == SelectionWeights::CoverageFirst;
+    SelectionResult r = selectSeparatricesIn(more, scope, params.ilpTimeLimit, params.ilpStallNodes);
     noteSelection(layout, r);
     if (r.selected.empty()) break;
     const int iteration = layout.iterations;

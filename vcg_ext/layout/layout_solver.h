@@ -104,7 +104,8 @@ Layout solveLayout(const GeodesicGraph& graph, const SeparatrixGraph& candidates
 // The steps of solveLayout, for the completion step and tests.
 
 /// How the solving cycle weighs its candidates: Eq. 4 (Length), or so that covering one port
-/// more outweighs any saving in length (CoverageFirst, weighCoverageFirst).
+/// more outweighs any saving in length, the shortest in all among equal covers (CoverageFirst:
+/// SelectionScope::coverageFirst).
 enum class SelectionWeights { Length, CoverageFirst };
 /// Step 2: searches from the dangling ports with `layout` frozen as barriers, selection among
 /// the new candidates, until nothing is added (at most params.maxIterations − 1 rounds). With
@@ -114,9 +115,6 @@ enum class SelectionWeights { Length, CoverageFirst };
 void runSolvingCycle(const GeodesicGraph& graph, Layout& layout, const LayoutParameters& params,
                      SelectionWeights weights, const std::vector<char>* sourcesOnly = nullptr, int maxSinks = 0,
                      double maxLength = std::numeric_limits<double>::infinity());
-/// Raises every arc's length by more than all of them together: the selection's weights
-/// (mean length / length) then favour covering more ports over any saving in length.
-void weighCoverageFirst(SeparatrixGraph& h);
 /// Step 3 without the dead-end removal: every dangling port traced to a t-junction, the
 /// border or another dangling port; ports that reach nothing join unresolvedPorts.
 void propagateDanglingPorts(const GeodesicGraph& graph, Layout& layout);
