@@ -93,6 +93,43 @@ TEST(Tracing, ChordRelations) {
   EXPECT_EQ(relateChords(2.5, 0.5, 0.2, 1.5), ChordRelation::Crossing);
 }
 
+TEST(Tracing, PathsMeetingThemselvesTangentiallyAreFound) {
+  // Face 0 is entered twice. Directions 0 and 2 are one class up to a half turn (tangential),
+  // 0 and 1 are orthogonal.
+  auto path = [](std::vector<PathSegment> segments) {
+    TracedPath p;
+    p.segments = std::move(segments);
+    return p;
+  };
+  EXPECT_TRUE(meetsItself(path({{0, 0, 0.5, 1.5}, {1, 1, 0.2, 2.2}, {0, 2, 1.2, 2.5}})));   // crossing
+  EXPECT_TRUE(meetsItself(path({{0, 0, 0.5, 1.5}, {1, 1, 0.2, 2.2}, {0, 2, 0.5, 2.5}})));   // one auxiliary point twice
+  EXPECT_TRUE(meetsItself(path({{0, 0, 0.5, 1.5}, {1, 1, 0.2, 2.2}, {0, 0, 1.5, 0.5}})));   // back along itself
+  EXPECT_FALSE(meetsItself(path({{0, 0, 0.5, 1.5}, {1, 1, 0.2, 2.2}, {0, 1, 1.2, 2.5}})));  // orthogonal crossing
+  EXPECT_FALSE(meetsItself(path({{0, 0, 0.5, 1.5}, {1, 1, 0.2, 2.2}, {0, 2, 1.7, 2.5}})));  // apart in face 0
+  EXPECT_FALSE(meetsItself(path({{0, 0, 0.5, 1.5}, {1, 0, 0.5, 1.5}, {2, 0, 0.5, 1.5}})));  // no face twice
+}
+
+TEST(Tracing, GraphHLeavesOutPathsThatMeetThemselvesTangentially) {
+  // The dragon's noisy field (795 singularities) has searches whose paths loop round and cross
+  // their own start in the same direction class: such a separatrix cut a 3-corner and a
+  // 5-corner patch pair on each side of its loop. H keeps none of them.
+  FCQL_REQUIRE_SHARED_WITH_FIELD(m, f, "dragon");
+  TracingParameters params;
+  params.alpha = 15;
+  params.k = 10;
+  auto t = trace(m, f, params);
+  std::vector<int> ports(t->graph->ports().size());
+  std::iota(ports.begin(), ports.end(), 0);
+  SearchOptions options;
+  options.maxSinks = params.k;
+  int looping = 0;
+  for (const auto& search : traceFromPorts(*t->graph, ports, options))
+    for (const auto& p : search) looping += p.end == TracedPath::Sink && meetsItself(p);
+  EXPECT_GT(looping, 0) << "the dragon's searches no longer find looping paths: the test checks nothing";
+  ASSERT_GT(t->h.arcs.size(), 20000u);
+  for (std::size_t a = 0; a < t->h.arcs.size(); ++a) ASSERT_FALSE(meetsItself(t->h.arcs[a].path)) << "arc " << a;
+}
+
 TEST(Tracing, CubeCandidatesIncludeTheTwelveEdges) {
   TracingParameters params;
   params.k = 6;
@@ -486,6 +523,15 @@ TEST(Tracing, TangentialCliquesHoldExactlyTheArcsThatCrossTangentially) {
           expected.insert({p.first, q.first});
       }
   ASSERT_GT(expected.size(), 50u);
+  // No candidate crosses itself tangentially either (Eq. 3 holds within a separatrix too).
+  for (const auto& face : perFace)
+    for (const auto& p : face.second)
+      for (const auto& q : face.second) {
+        const PathSegment &s = *p.second, &u = *q.second;
+        if (p.first == q.first && &s < &u && (s.direction - u.direction) % 2 == 0)
+          EXPECT_EQ(relateChords(s.from, s.to, u.from, u.to), ChordRelation::Disjoint)
+              << "candidate " << p.first << " meets itself tangentially in face " << face.first;
+      }
   const std::vector<std::pair<int, int>> pairs(expected.begin(), expected.end());
   EXPECT_EQ(t->h.tangentialPairs, pairs);
   std::set<std::vector<int>> distinct;

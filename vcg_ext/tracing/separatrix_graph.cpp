@@ -7,12 +7,28 @@
 
 namespace fcql {
 
+bool meetsItself(const TracedPath& path) {
+  // Pieces by face; a face the path enters twice is tested pairwise.
+  std::unordered_map<int, std::vector<const PathSegment*>> byFace;
+  for (const auto& s : path.segments)
+    if (s.face >= 0) byFace[s.face].push_back(&s);
+  for (const auto& entry : byFace) {
+    const auto& pieces = entry.second;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      for (std::size_t j = i + 1; j < pieces.size(); ++j)
+        if ((pieces[i]->direction - pieces[j]->direction) % 2 == 0 &&
+            relateChords(pieces[i]->from, pieces[i]->to, pieces[j]->from, pieces[j]->to) != ChordRelation::Disjoint)
+          return true;
+  }
+  return false;
+}
+
 SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vector<std::vector<TracedPath>>& searches) {
   // Best path per unordered pair of ports.
   std::map<std::pair<int, int>, const TracedPath*> best;
   for (const auto& search : searches)
     for (const TracedPath& p : search) {
-      if (p.end != TracedPath::Sink || p.sinkPort < 0) continue;
+      if (p.end != TracedPath::Sink || p.sinkPort < 0 || meetsItself(p)) continue;
       std::pair<int, int> key(std::min(p.sourcePort, p.sinkPort), std::max(p.sourcePort, p.sinkPort));
       auto it = best.find(key);
       if (it == best.end() || p.length < it->second->length ||

@@ -34,6 +34,9 @@ struct SeparatrixGraph {
   std::vector<std::vector<int>> arcsAtPort;
 };
 
+/// Whether the path meets itself inside a triangle (crosses, touches or runs along itself).
+bool meetsItself(const TracedPath& path);
+
 /// Builds H from the results of the searches (any order; the result does not depend on it).
 SeparatrixGraph buildSeparatrixGraph(const GeodesicGraph& graph, const std::vector<std::vector<TracedPath>>& searches);
 
