@@ -1,6 +1,7 @@
 #include "field/curvature.h"
 #include "field/field_analysis.h"
 #include "field/field_generation.h"
+#include "field/singularity_pairs.h"
 #include "mesh/generators.h"
 #include "mesh/mesh_io.h"
 #include "test_support.h"
@@ -323,6 +324,45 @@ TEST(FieldGeneration, FertilityHasAFewTensOfSingularities) {
 // Issue 20: noise of 0.05% of the bounding-box diagonal on kitten's vertices changes the
 // number of singularities of the computed field by at most 10% (at --field-scale 0 it went
 // from 30 to 32–36).
+TEST(FieldGeneration, PairOnTheTwoEndsOfAnEdgeIsCancelled) {
+  // The torus's field has no singularity. Turning one face's cross by some angle makes a +1/4
+  // and a -1/4 singularity on the two ends of one of its edges; the cancellation turns one of
+  // that edge's two crosses back until both are regular, and leaves it alone if both are fixed.
+  const SurfaceMesh m = torus();
+  const CrossField smooth = generateCrossField(m);
+  ASSERT_TRUE(analyzeField(m, smooth).singularities.empty());
+  int made = 0;
+  for (int f = 0; f < m.numFaces() && made < 3; f += 97)
+    for (int deg = 40; deg <= 85; deg += 5) {
+      CrossField field = smooth;
+      const double t = deg * kPi / 180;
+      field.u[f] = smooth.u[f] * std::cos(t) + m.faceNormal(f).cross(smooth.u[f]) * std::sin(t);
+      const FieldAnalysis before = analyzeField(m, field);
+      if (before.singularities.size() != 2) continue;
+      const int a = before.singularities[0].vertex, b = before.singularities[1].vertex;
+      ASSERT_EQ(before.singularities[0].indexQuarters * before.singularities[1].indexQuarters, -1);
+      // The two faces on edge ab.
+      std::vector<char> fixed(m.numFaces(), 0);
+      for (int g = 0; g < m.numFaces(); ++g) {
+        int hits = 0;
+        for (int c = 0; c < 3; ++c) hits += m.vertex(g, c) == a || m.vertex(g, c) == b;
+        if (hits == 2) fixed[g] = 1;
+      }
+      ASSERT_EQ(std::count(fixed.begin(), fixed.end(), 1), 2) << "the pair is not on one edge";
+      CrossField kept = field;
+      EXPECT_EQ(cancelAdjacentSingularityPairs(m, kept, fixed), 0);
+      EXPECT_EQ(analyzeField(m, kept).singularities.size(), 2u);
+      EXPECT_EQ(cancelAdjacentSingularityPairs(m, field), 1);
+      EXPECT_TRUE(analyzeField(m, field).singularities.empty()) << "face " << f << " turned by " << deg << " deg";
+      int changed = 0;
+      for (int g = 0; g < m.numFaces(); ++g) changed += (field.u[g] - kept.u[g]).norm() > 1e-12;
+      EXPECT_EQ(changed, 1) << "one cross turned, the others kept";
+      ++made;
+      break;
+    }
+  EXPECT_GE(made, 2) << "no turn of a single cross made a pair: the test checks nothing";
+}
+
 TEST(FieldGeneration, KittenKeepsItsSingularitiesUnderNoise) {
   FCQL_REQUIRE_SHARED(path, "kitten.obj");
   SurfaceMesh m = loadMesh(path);

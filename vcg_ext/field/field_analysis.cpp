@@ -261,6 +261,10 @@ void checkFieldMatchesMesh(const SurfaceMesh& mesh, const CrossField& field) {
 
 }  // namespace
 
+int vertexIndexQuarters(const SurfaceMesh& mesh, const CrossField& field, int v) {
+  return indexQuartersOf(computeStarChart(mesh, field, v));
+}
+
 std::vector<int> computeVertexIndices(const SurfaceMesh& mesh, const CrossField& field) {
   checkFieldMatchesMesh(mesh, field);
   std::vector<int> quarters(mesh.numVertices(), 0);

@@ -120,6 +120,9 @@ FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field);
 /// matchings or ports. Throws FieldError if the field does not match the mesh.
 std::vector<int> computeVertexIndices(const SurfaceMesh& mesh, const CrossField& field);
 
+/// The index ×4 of one vertex (its entry of computeVertexIndices), from its star alone.
+int vertexIndexQuarters(const SurfaceMesh& mesh, const CrossField& field, int v);
+
 /// Ports of one vertex (also used for regular vertices by the tracer when needed).
 std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field, int v);
 

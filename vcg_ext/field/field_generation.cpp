@@ -43,6 +43,7 @@
 // normalisation terms are integrals over the surface, so the balance does not depend on the
 // resolution either.
 #include "field/field_generation.h"
+#include "field/singularity_pairs.h"
 
 #include "field/curvature.h"
 #include "field/field_analysis.h"
@@ -591,6 +592,12 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
       cones = std::move(left);
     }
   }
+  // A ±1/4 pair on the two ends of one edge (a sliver triangle of a noisy scan): cancelled
+  // where one of the edge's two free triangles can take a neighbour's cross.
+  std::vector<char> fixedFace(nf, 0);
+  for (int f = 0; f < nf; ++f) fixedFace[f] = unknown[f] < 0;
+  const int cancelled = cancelAdjacentSingularityPairs(mesh, field, fixedFace);
+  if (report) report->pairsCancelled = cancelled;
   return field;
 }
 

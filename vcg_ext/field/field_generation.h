@@ -43,6 +43,8 @@ struct FieldGenerationReport {
   /// Interior vertices whose own curvature is kept undiffused because the field would otherwise
   /// give them index +1/2 or more (sharp cones, spikes).
   int conesKept = 0;
+  /// ±1/4 singularity pairs on the two ends of one edge, cancelled (singularity_pairs.h).
+  int pairsCancelled = 0;
 };
 
 /// Per edge id (SurfaceMesh::edgeId): 1 if the dihedral angle exceeds `sharpAngleDeg`.

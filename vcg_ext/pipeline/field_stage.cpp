@@ -56,6 +56,11 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
                         (r.generation.conesKept == 1 ? " cone vertex keeps a quarter turn of its"
                                                      : " cone vertices keep a quarter turn of their") +
                         " curvature (index +1/2 or more there otherwise)"
+                  : std::string()) +
+             (r.generation.pairsCancelled > 0
+                  ? ", " + std::to_string(r.generation.pairsCancelled) +
+                        (r.generation.pairsCancelled == 1 ? " pair" : " pairs") +
+                        " of +1/4 and -1/4 singularities on the two ends of one edge cancelled"
                   : std::string()));
   }
   if (source.asStored) r.field = source.asStored(r.field);
@@ -88,6 +93,7 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
   f.set("field.sharp_edges", r.generation.sharpEdges);
   f.set("field.constrained_faces", r.generation.constrainedFaces);
   f.set("field.quarter_cones", r.generation.conesKept);
+  f.set("field.cancelled_pairs", r.generation.pairsCancelled);
   recordParameters(f, p, PipelineStage::Field);
   f.set("time_s.load", input.loadSeconds);
   f.set("time_s.field", r.seconds);
