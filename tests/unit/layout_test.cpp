@@ -528,12 +528,12 @@ TEST(LayoutCompletion, KittenGetsAConformingLayout) {
   EXPECT_EQ(repaired->layout.completion.tJunctionsBefore, 0) << "nothing left for the completion";
 }
 
-TEST(CoverageRepair, FertilityAtThePapersAlphaAndKIsConforming) {
+TEST(CoverageRepair, RockerarmAtThePapersAlphaAndKIsConforming) {
   // At α 30, k 30 (the paper's Table 1) Eq. 4, the solving cycle and the completion leave two
-  // ports of fertility's field at t-junctions: every path between them runs along 8 or more
-  // separatrices. Covering ports first around them in H matches them all.
-  FCQL_REQUIRE_SHARED(fertility, "fertility.obj");
-  const SurfaceMesh mesh = loadMesh(fertility);
+  // ports of rockerarm's field at t-junctions (fertility's did too until its field lost a
+  // singularity pair on one edge). Covering ports first around them in H matches them all.
+  FCQL_REQUIRE_SHARED(rockerarm, "rockerarm.obj");
+  const SurfaceMesh mesh = loadMesh(rockerarm);
   const CrossField field = generateCrossField(mesh);
   TracingParameters tp;
   tp.alpha = 30;
@@ -541,14 +541,14 @@ TEST(CoverageRepair, FertilityAtThePapersAlphaAndKIsConforming) {
   LayoutParameters without;
   without.coverageRepair = false;
   auto before = solve(mesh, field, tp, without);
-  EXPECT_GT(before->layout.tJunctions, 0) << "fertility's layout is conforming without the repair: pick another case";
+  EXPECT_GT(before->layout.tJunctions, 0) << "rockerarm's layout is conforming without the repair: pick another case";
   auto after = solve(mesh, field, tp);
   checkLayoutInvariants(*after);
   EXPECT_EQ(after->layout.tJunctions, 0);
   EXPECT_EQ(after->layout.danglingAfterCycle, 0);
   EXPECT_TRUE(after->layout.leftPorts.empty());
   EXPECT_GE(after->layout.coverageRepair.portsGained, 2);
-  EXPECT_LE(after->patches.numPatches(), 160) << "issue 20: at most 1.25 times the paper's 128 patches";
+  EXPECT_LE(after->patches.numPatches(), 94) << "issue 20: at most 1.25 times the paper's 75 patches";
   for (const auto& p : after->patches.patches) EXPECT_TRUE(p.valid) << p.problem;
 }
 
