@@ -86,6 +86,9 @@ SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOp
   return smoothing;
 }
 
+/// Further rounds of reduceFolds' second way (sampling the patches around the folds again).
+constexpr int kResampleRounds = 3;
+
 /// Quads folded (scaled Jacobian <= 0), listed in `which` if given.
 int foldedQuads(const QuadMesh& m, std::vector<int>* which = nullptr) {
   std::vector<double> j;
@@ -114,7 +117,7 @@ template <class Accept>
 bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const QuadrangulationOptions& options,
                  Accept&& accept) {
   std::vector<int> folded;
-  const int before = foldedQuads(r.mesh, &folded);
+  int before = foldedQuads(r.mesh, &folded);
   if (options.fieldDirections.empty() || before == 0) return false;
   SmoothingOptions laplacian = options.smoothing;
   laplacian.triangleDirections.clear();
@@ -156,7 +159,15 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
     r = std::move(c);
     return true;
   };
-  return attempt(0) || attempt(1) || attempt(2);
+  if (!(attempt(0) || attempt(1) || attempt(2))) return false;
+  // Folds left (the patches sampled again can leave some in their neighbours): the patches
+  // around them are sampled again too, while that folds fewer.
+  for (int round = 0; round < kResampleRounds; ++round) {
+    folded.clear();
+    before = foldedQuads(r.mesh, &folded);
+    if (before == 0 || !attempt(1)) break;
+  }
+  return true;
 }
 
 /// The patch graph and its integer side lengths at one target edge length, after the
