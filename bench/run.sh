@@ -280,6 +280,65 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## Self-crossing candidates, singularity pairs on one edge, fold rounds (issues 20 and 21, sixteenth session, 2026-12-06)
+
+Measured on the same machine, bench parameters; the table above is the run after all of it.
+
+- **Graph H leaves out paths that meet themselves tangentially** (cross, touch or run back along
+  themselves in one direction class inside a triangle; `meetsItself`, `tracing/separatrix_graph.h`).
+  Eq. 3 forbids tangential crossings between separatrices but a single one looping round across
+  its own start broke it unseen: on the dragon's field 21 of 21,384 candidates did, and the
+  coverage repair had selected one (from a singularity round a loop of 1.5 units, across its own
+  first piece, to a singularity 0.6 away), which cut a cluster of 3-, 5-, 5- and 3-corner
+  patches. Dragon: invalid patches 6 → 2 (its two teardrops at index-3/4 singularities),
+  t-junctions 107 → 108, patches 5861 → 5852. The other 11 meshes: byte-identical separatrices.
+  Leaving out orthogonal self-crossings too (not kept) changed fertility (135 → 130 patches,
+  7.0% → 8.1% misaligned quads) and made the dragon's quad stage miss the distance bound.
+- **A +1/4 and −1/4 pair on the two ends of one edge is cancelled** (`field/singularity_pairs.h`,
+  generated fields only; `field.cancelled_pairs`): one of the edge's two crosses turns by the least
+  multiple of 5° that leaves both ends and the two triangles' other vertices regular (faces
+  constrained to sharp or border edges are kept). Such a pair comes from a sliver triangle whose
+  angles noise turned over; the bunny with 0.05% noise (seed 3) had one at the ends of a
+  0.00017-long edge, and its separatrices cut a 2-triangle patch (0.0008 of the diagonal) that
+  two t-junctions and 81 quads then filled: its quad mesh fell to the stage without the field
+  (31.9% misaligned, 1 fold, base complex 829). Clean fields with such a pair: fertility (38 → 36
+  singularities, 135 → 121 patches, misaligned quads 7.0% → 3.0%, per face 2.4% → 1.4%, minimum
+  scaled Jacobian 0.19 → 0.49) and deckel (64 → 62, 203 → 189 patches, 12.4% → 12.5%); the dragon's
+  computed field (not the one it ships) has 74. Noise (σ = 0.05% of the diagonal, numpy seeds 1–3,
+  singularities / patches / t-junctions / misaligned quads / folds / base complex):
+
+ mesh | seed 1 | seed 2 | seed 3
+---|---|---|---
+ bunny (28 clean) | 26 / 69 / 0 / 7.7% / 0 / 69 | 28 / 68 / 0 / 5.7% / 0 / 68 | 28 / 72 / 0 / 11.5% / 0 / 72 (was 30 / 91 / 2 / 31.9% / 1 / 829)
+ fertility (36 clean) | 38 / 121 / 0 / 4.1% / 0 / 121 | 36 / 99 / 0 / 5.3% / 0 / 99 | 36 / 99 / 0 / 4.5% / 0 / 99
+ kitten (24 clean) | 24 / 73 / 0 / 10.0% / 0 / 73 | 24 / 62 / 0 / 12.7% / 0 / 62 | 24 / 88 / 0 / 10.3% / 0 / 88
+
+  All nine conforming, base complex = patches, singularities within 10% (fertility seed 1: +5.6%).
+- **Quad stage, folds left by the field-aligned pass**: the stage without the field runs on to
+  its refinements only if its first pass (at the asked size, cached) folds fewer (the dragon's
+  folded 18 against the field's 15, then 15 after a refinement that cost 9 s), and the patches
+  around the folds left are sampled again with mean-value coordinates for up to 3 more rounds,
+  while that folds fewer (dragon 15 → 10 folded quads, minimum scaled Jacobian −0.69 → −0.19).
+  No other shared mesh has folds there at the default size.
+
+Dragon, before the session → after: invalid patches 6 → 2, t-junctions 107 → 108, misaligned
+quads 43.0% → 40.9% (per face 19.6% → 14.9%), folded quads 8 → 10 (the field-aligned quads are
+now kept: 15 with one round of resampling, 8 before from the stage without the field), quad
+stage 15.5 → 22–30 s (the new layout needs more zero-chain work, 2.4 s of counts instead of 1.1,
+and three more smoothing passes): the issue's 3 s is far off, as are its 25% and 0 folds there.
+
+Tried and not kept: a conflict between every two candidates of one direction class in a common
+triangle (parallel strips thinner than a triangle): bunny's quads narrower than 0.1 of the target
+17.4% → 5.6% and 8.5% → 6.1% misaligned, but kitten 10.0% → 12.7% and deckel 2 t-junctions, 212
+patches and twice the quads. A conflict between a candidate and any other crossing its first or
+last piece (in the triangle it leaves its singularity by): 375K more conflict pairs on the noisy
+bunny and the 2-triangle patch stayed (it came from t-junctions). Weaker bound on coarse
+segments (1.5 → 3 times the target): bunny 6660 → 3766 quads, thin quads 17.4% → 9.7%, misaligned
+8.5% → 9.9%. The thin quads are the chords' (README, *Known weak spots*): one bunny chord joins
+104 segments of ideal counts 0.056 to 16.2 (a separatrix passing 0.056 quad edges from a
+singularity). Lilium at `--scale 0.0075` has 12 folded quads (0 at 0.02, 0.03 and 0.015) in such a
+crushed strip: 13 rows across a segment of ideal count 0.31.
+
 ## Covering the ports first (issue 20) and smaller quads before a fallback that touches most patches (issue 21), fifteenth session, 2026-12-06
 
 The first 0-1 program (Eq. 4) trades covering ports against length. On fertility (α 30, k 30),
