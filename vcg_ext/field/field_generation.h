@@ -7,7 +7,8 @@
 // threshold) and to border edges. The connection's curvature is spread over a length tied to
 // the layout's scale (FieldGenerationOptions::scale), so that noise makes no singularities.
 // One sparse Hermitian solve (CHOLMOD), a few normalising refinement steps, then
-// normalisation. See field_generation.cpp for the formulas.
+// normalisation; last, a ±1/4 singularity pair on the two ends of one edge is cancelled
+// (field/singularity_pairs.h). See field_generation.cpp for the formulas.
 //
 // Sharp edges constrain the field only where they form feature lines: runs of sharp edges that
 // go on nearly straight for a few edges (or for a tenth of the bounding-box diagonal). Isolated

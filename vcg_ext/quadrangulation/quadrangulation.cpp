@@ -109,7 +109,9 @@ int foldedQuads(const QuadMesh& m, std::vector<int>* which = nullptr) {
 /// the plain smoothing first, on the same samples. Then the patches the folds and the quads
 /// around them lie in sampled again with mean-value coordinates inside and arc length on
 /// their sides (the neighbours keep the field inside), and last the whole pass without the field (mean-value maps, arc-length sides,
-/// plain smoothing). Returns whether one was taken. Run once, on the pass the refinements keep.
+/// plain smoothing). Once one is taken, the second way runs again on the folds still left, up
+/// to kResampleRounds times while each folds fewer (the patches sampled again can leave folds
+/// in their neighbours). Returns whether one was taken. Run once, on the pass the refinements keep.
 /// Whatever the number of folds: the three cost less than the whole stage without the field
 /// that follows when folds are left (the dragon's field-aligned pass folded 21 quads, over the
 /// 16 this once stopped at, and the plain smoothing left 13).

@@ -8,17 +8,20 @@
 namespace fcql {
 
 bool meetsItself(const TracedPath& path) {
-  // Pieces by face; a face the path enters twice is tested pairwise.
-  std::unordered_map<int, std::vector<const PathSegment*>> byFace;
-  for (const auto& s : path.segments)
-    if (s.face >= 0) byFace[s.face].push_back(&s);
-  for (const auto& entry : byFace) {
-    const auto& pieces = entry.second;
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      for (std::size_t j = i + 1; j < pieces.size(); ++j)
-        if ((pieces[i]->direction - pieces[j]->direction) % 2 == 0 &&
-            relateChords(pieces[i]->from, pieces[i]->to, pieces[j]->from, pieces[j]->to) != ChordRelation::Disjoint)
+  // Its pieces sorted by face: only a face the path enters twice or more is tested, pairwise.
+  std::vector<std::pair<int, int>> byFace;  // (face, piece)
+  byFace.reserve(path.segments.size());
+  for (int i = 0; i < int(path.segments.size()); ++i)
+    if (path.segments[i].face >= 0) byFace.emplace_back(path.segments[i].face, i);
+  std::sort(byFace.begin(), byFace.end());
+  for (std::size_t first = 0, end; first < byFace.size(); first = end) {
+    for (end = first + 1; end < byFace.size() && byFace[end].first == byFace[first].first;) ++end;
+    for (std::size_t i = first; i < end; ++i)
+      for (std::size_t j = i + 1; j < end; ++j) {
+        const PathSegment &a = path.segments[byFace[i].second], &b = path.segments[byFace[j].second];
+        if ((a.direction - b.direction) % 2 == 0 && relateChords(a.from, a.to, b.from, b.to) != ChordRelation::Disjoint)
           return true;
+      }
   }
   return false;
 }
