@@ -9,7 +9,36 @@
 namespace fcql {
 
 namespace {
+
 constexpr double kTurnStep = 5.0 * 3.14159265358979323846 / 180.0;  ///< 5 degrees
+constexpr int kMaxSteps = 9;  ///< up to 45 degrees either way: a cross repeats every 90
+
+/// The turns (in steps of kTurnStep) of the two crosses on a pair's edge, tried in this order:
+/// one cross alone, the least turn first (the first face before the second, counter-clockwise
+/// before clockwise), then both together, the least in all first.
+const std::vector<std::pair<int, int>>& turns() {
+  static const std::vector<std::pair<int, int>> all = [] {
+    std::vector<std::pair<int, int>> t, both;
+    for (int step = 1; step <= kMaxSteps; ++step)
+      for (int sign : {1, -1}) t.emplace_back(sign * step, 0), t.emplace_back(0, sign * step);
+    for (int i = -kMaxSteps; i <= kMaxSteps; ++i)
+      for (int j = -kMaxSteps; j <= kMaxSteps; ++j)
+        if (i != 0 && j != 0) both.emplace_back(i, j);
+    std::stable_sort(both.begin(), both.end(), [](const auto& x, const auto& y) {
+      return std::abs(x.first) + std::abs(x.second) < std::abs(y.first) + std::abs(y.second);
+    });
+    t.insert(t.end(), both.begin(), both.end());
+    return t;
+  }();
+  return all;
+}
+
+/// u (the cross of face h) turned by `steps` × kTurnStep about h's normal.
+Vec3 turned(const SurfaceMesh& mesh, int h, const Vec3& u, int steps) {
+  const double t = steps * kTurnStep;
+  return u * std::cos(t) + mesh.faceNormal(h).cross(u) * std::sin(t);
+}
+
 }  // namespace
 
 int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, const std::vector<char>& fixedFace) {
@@ -21,7 +50,7 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
       const int g = mesh.adjacentFace(f, i);
       if (g < f) continue;  // a border edge, or seen from g
       const int a = mesh.vertex(f, i), b = mesh.vertex(f, (i + 1) % 3);
-      if (mesh.isBorderVertex(a) || mesh.isBorderVertex(b) || q[a] * q[b] != -1) continue;
+      if (mesh.isBorderVertex(a) || mesh.isBorderVertex(b) || q[a] * q[b] >= 0) continue;
       // The vertices whose index a change of f's or g's cross can move.
       std::vector<int> around;
       for (int h : {f, g})
@@ -32,31 +61,29 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
         for (int v : around) sum += std::abs(q[v]);
         return sum;
       };
-      const int before = irregular();
-      // The smallest turn of one of the two crosses that does it, in steps of 5 degrees.
-      bool done = false;
-      for (int step = 1; step <= 17 && !done; ++step)
-        for (int sign : {1, -1})
-          for (int h : {f, g}) {
-            if (done || isFixed(h)) continue;
-            const Vec3 saved = field.u[h];
-            const double t = sign * step * kTurnStep;
-            field.u[h] = saved * std::cos(t) + mesh.faceNormal(h).cross(saved) * std::sin(t);
-            int savedQ[3];
-            for (int c = 0; c < 3; ++c) {
-              const int v = mesh.vertex(h, c);
-              savedQ[c] = q[v];
-              q[v] = vertexIndexQuarters(mesh, field, v);
-            }
-            // Both ends regular, and the count around down by exactly the pair.
-            if (q[a] == 0 && q[b] == 0 && irregular() == before - 2) {
-              done = true;
-              ++cancelled;
-            } else {
-              field.u[h] = saved;
-              for (int c = 0; c < 3; ++c) q[mesh.vertex(h, c)] = savedQ[c];
-            }
+      // A quarter off each end at a time (a ±1/2 pair takes two), while some turn does it.
+      while (q[a] * q[b] < 0) {
+        const int before = irregular(), qa = std::abs(q[a]), qb = std::abs(q[b]);
+        std::vector<int> savedQ;
+        for (int v : around) savedQ.push_back(q[v]);
+        bool done = false;
+        for (const auto& turn : turns()) {
+          if ((turn.first != 0 && isFixed(f)) || (turn.second != 0 && isFixed(g))) continue;
+          const Vec3 fromF = field.u[f], fromG = field.u[g];
+          field.u[f] = turned(mesh, f, fromF, turn.first);
+          field.u[g] = turned(mesh, g, fromG, turn.second);
+          for (int v : around) q[v] = vertexIndexQuarters(mesh, field, v);
+          // A quarter less at both ends, and the count around down by just that.
+          if (std::abs(q[a]) == qa - 1 && std::abs(q[b]) == qb - 1 && irregular() == before - 2) {
+            done = true;
+            ++cancelled;
+            break;
           }
+          field.u[f] = fromF, field.u[g] = fromG;
+          for (std::size_t k = 0; k < around.size(); ++k) q[around[k]] = savedQ[k];
+        }
+        if (!done) break;
+      }
     }
   return cancelled;
 }
