@@ -18,11 +18,6 @@ double signedAngle(const Vec3& from, const Vec3& to, const Vec3& normal) {
   return std::atan2(normal.dot(from.cross(to)), from.dot(to));
 }
 
-/// A rotation of `v` by `angle` about the unit `axis` (v orthogonal to the axis).
-Vec3 rotateInPlane(const Vec3& v, const Vec3& axis, double angle) {
-  return v * std::cos(angle) + axis.cross(v) * std::sin(angle);
-}
-
 /// Chart angle of the field's u in a star face whose outgoing edge is at chart angle `start`.
 double chartAngleOfU(const SurfaceMesh& mesh, const CrossField& field, const StarCorner& sc, double start) {
   Vec3 outgoing = mesh.edgeVector(sc.face, sc.corner);
@@ -260,6 +255,10 @@ void checkFieldMatchesMesh(const SurfaceMesh& mesh, const CrossField& field) {
 }
 
 }  // namespace
+
+Vec3 rotateInPlane(const Vec3& v, const Vec3& axis, double angle) {
+  return v * std::cos(angle) + axis.cross(v) * std::sin(angle);
+}
 
 int vertexIndexQuarters(const SurfaceMesh& mesh, const CrossField& field, int v) {
   return indexQuartersOf(computeStarChart(mesh, field, v));

@@ -120,6 +120,9 @@ FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field);
 /// matchings or ports. Throws FieldError if the field does not match the mesh.
 std::vector<int> computeVertexIndices(const SurfaceMesh& mesh, const CrossField& field);
 
+/// A rotation of `v` by `angle` about the unit `axis` (v orthogonal to the axis).
+Vec3 rotateInPlane(const Vec3& v, const Vec3& axis, double angle);
+
 /// The index ×4 of one vertex (its entry of computeVertexIndices), from its star alone.
 int vertexIndexQuarters(const SurfaceMesh& mesh, const CrossField& field, int v);
 

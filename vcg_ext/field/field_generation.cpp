@@ -592,8 +592,8 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
       cones = std::move(left);
     }
   }
-  // A ±1/4 pair on the two ends of one edge (a sliver triangle of a noisy scan): cancelled
-  // where one of the edge's two free triangles can take a neighbour's cross.
+  // Opposite singularities on the two ends of one edge (a sliver triangle of a noisy scan):
+  // cancelled where turning the crosses of the edge's free triangles does it.
   std::vector<char> fixedFace(nf, 0);
   for (int f = 0; f < nf; ++f) fixedFace[f] = unknown[f] < 0;
   const int cancelled = cancelAdjacentSingularityPairs(mesh, field, fixedFace);

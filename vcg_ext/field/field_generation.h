@@ -7,7 +7,7 @@
 // threshold) and to border edges. The connection's curvature is spread over a length tied to
 // the layout's scale (FieldGenerationOptions::scale), so that noise makes no singularities.
 // One sparse Hermitian solve (CHOLMOD), a few normalising refinement steps, then
-// normalisation; last, a ±1/4 singularity pair on the two ends of one edge is cancelled
+// normalisation; last, opposite singularities on the two ends of one edge are cancelled
 // (field/singularity_pairs.h). See field_generation.cpp for the formulas.
 //
 // Sharp edges constrain the field only where they form feature lines: runs of sharp edges that
@@ -44,7 +44,8 @@ struct FieldGenerationReport {
   /// Interior vertices whose own curvature is kept undiffused because the field would otherwise
   /// give them index +1/2 or more (sharp cones, spikes).
   int conesKept = 0;
-  /// ±1/4 singularity pairs on the two ends of one edge, cancelled (singularity_pairs.h).
+  /// Quarter pairs of opposite singularities on the two ends of one edge, cancelled (a ±1/2
+  /// pair counts 2; singularity_pairs.h).
   int pairsCancelled = 0;
 };
 

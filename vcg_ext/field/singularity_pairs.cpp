@@ -3,7 +3,6 @@
 #include "field/field_analysis.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 
 namespace fcql {
@@ -31,12 +30,6 @@ const std::vector<std::pair<int, int>>& turns() {
     return t;
   }();
   return all;
-}
-
-/// u (the cross of face h) turned by `steps` × kTurnStep about h's normal.
-Vec3 turned(const SurfaceMesh& mesh, int h, const Vec3& u, int steps) {
-  const double t = steps * kTurnStep;
-  return u * std::cos(t) + mesh.faceNormal(h).cross(u) * std::sin(t);
 }
 
 }  // namespace
@@ -70,8 +63,8 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
         for (const auto& turn : turns()) {
           if ((turn.first != 0 && isFixed(f)) || (turn.second != 0 && isFixed(g))) continue;
           const Vec3 fromF = field.u[f], fromG = field.u[g];
-          field.u[f] = turned(mesh, f, fromF, turn.first);
-          field.u[g] = turned(mesh, g, fromG, turn.second);
+          field.u[f] = rotateInPlane(fromF, mesh.faceNormal(f), turn.first * kTurnStep);
+          field.u[g] = rotateInPlane(fromG, mesh.faceNormal(g), turn.second * kTurnStep);
           for (int v : around) q[v] = vertexIndexQuarters(mesh, field, v);
           // A quarter less at both ends, and the count around down by just that.
           if (std::abs(q[a]) == qa - 1 && std::abs(q[b]) == qb - 1 && irregular() == before - 2) {

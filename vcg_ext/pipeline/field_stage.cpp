@@ -59,8 +59,8 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
                   : std::string()) +
              (r.generation.pairsCancelled > 0
                   ? ", " + std::to_string(r.generation.pairsCancelled) +
-                        (r.generation.pairsCancelled == 1 ? " pair" : " pairs") +
-                        " of +1/4 and -1/4 singularities on the two ends of one edge cancelled"
+                        (r.generation.pairsCancelled == 1 ? " quarter pair" : " quarter pairs") +
+                        " of opposite singularities on the two ends of one edge cancelled"
                   : std::string()));
   }
   if (source.asStored) r.field = source.asStored(r.field);

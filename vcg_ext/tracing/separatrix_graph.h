@@ -34,7 +34,8 @@ struct SeparatrixGraph {
   std::vector<std::vector<int>> arcsAtPort;
 };
 
-/// Whether the path meets itself inside a triangle (crosses, touches or runs along itself).
+/// Whether the path meets itself tangentially: two of its pieces in one triangle, in one
+/// direction class up to a half turn, cross, touch or run along each other.
 bool meetsItself(const TracedPath& path);
 
 /// Builds H from the results of the searches (any order; the result does not depend on it).
