@@ -1,5 +1,6 @@
 #include "quadrangulation/quad_smoothing.h"
 
+#include "quadrangulation/field_relaxation.h"
 #include "quadrangulation/fold_repair.h"
 
 #include "mesh/closest_point_index.h"
@@ -26,6 +27,9 @@ constexpr int kKeepGridRings = 2;
 constexpr double kUntangleFloor = 0.02;  ///< the untangling may take a good quad this low, not lower
 constexpr double kSlideAngleDeg = 60;
 constexpr double kSlideTurnDeg = 20;
+/// Vertices nearer than this many of their mean edge lengths to a feature line stay out of the
+/// relaxation towards the field.
+constexpr double kRelaxFeatureGap = 2;
 constexpr char kFixed = 1;               ///< a border vertex, or one at a corner of the feature lines
 constexpr char kOnFeature = 2;           ///< on a feature line: smoothing keeps it, untangling slides it along
 
@@ -326,6 +330,59 @@ std::vector<char> movingVertices(const QuadMesh& quads, const QuadJacobian& jaco
   return moving;
 }
 
+/// The relaxation towards the field (field_relaxation.h), `options.fieldRelaxationRounds`
+/// times. Vertices within kRelaxFeatureGap of their mean edge length from a feature line stay
+/// (moved beside a crease, the quads cut it: the camelhead's ridges then missed the distance
+/// bound). Each round's moves go through `keepFromFolding`; the moves it undid are tried again
+/// half and a quarter of the way, through it again.
+template <class KeepFromFolding>
+void relaxRounds(QuadMesh& quads, const ClosestPointIndex& index, const std::vector<Vec3>& normals,
+                 const SmoothingOptions& options, const std::vector<char>& fixed,
+                 const std::vector<std::vector<int>>& neighbours, const ClosestPointIndex* features,
+                 const QuadJacobian& jacobian, KeepFromFolding&& keepFromFolding, std::vector<double>& before,
+                 SmoothingReport& report) {
+  const int nv = quads.numVertices();
+  std::vector<char> movable(nv, 0);
+  for (int v = 0; v < nv; ++v) {
+    if (fixed[v] || neighbours[v].empty()) continue;
+    movable[v] = 1;
+    if (!features) continue;
+    double edge = 0;
+    for (int w : neighbours[v]) edge += (quads.positions[w] - quads.positions[v]).norm();
+    edge /= double(neighbours[v].size());
+    if (features->closest(quads.positions[v]).distance < kRelaxFeatureGap * edge) movable[v] = 0;
+  }
+  // The scaled Jacobians at `at` into `before`, for keepFromFolding.
+  auto measureAt = [&](const std::vector<Vec3>& at) {
+    std::vector<Vec3> now = std::move(quads.positions);
+    quads.positions = at;
+    jacobian.all(before);
+    quads.positions = std::move(now);
+  };
+  for (int round = 0; round < options.fieldRelaxationRounds; ++round) {
+    const FieldRelaxation relaxed =
+        relaxTowardsField(quads, index, normals, options.triangleDirections, movable, options.fieldRelaxationAnchor);
+    if (!relaxed.solved) break;
+    const std::vector<Vec3> previous = quads.positions;
+    measureAt(previous);
+    quads.positions = relaxed.positions;
+    keepFromFolding(previous);
+    for (double share : {0.5, 0.25}) {
+      const std::vector<Vec3> kept = quads.positions;
+      bool any = false;
+      for (int v = 0; v < nv; ++v)
+        if (kept[v] == previous[v] && relaxed.positions[v] != previous[v]) {
+          quads.positions[v] = index.closest(previous[v] + (relaxed.positions[v] - previous[v]) * share).point;
+          any = true;
+        }
+      if (!any) break;
+      measureAt(kept);
+      keepFromFolding(kept);
+    }
+    for (int v = 0; v < nv; ++v) report.relaxedMoves += quads.positions[v] != previous[v];
+  }
+}
+
 }  // namespace
 
 SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
@@ -335,6 +392,8 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   if (!(options.step > 0 && options.step <= 1)) throw std::invalid_argument("smoothing: the step must be in (0, 1]");
   if (!(options.keepGridAbove >= 0 && options.keepGridAbove <= 1))
     throw std::invalid_argument("smoothing: keepGridAbove must be in [0, 1]");
+  if (options.fieldRelaxationRounds < 0) throw std::invalid_argument("smoothing: the relaxation rounds must be >= 0");
+  if (!(options.fieldRelaxationAnchor > 0)) throw std::invalid_argument("smoothing: the relaxation's anchor must be positive");
   SmoothingReport report;
   if (options.iterations == 0 || quads.numQuads() == 0) return report;
 
@@ -454,6 +513,36 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   const bool aligned = options.triangleDirections.size() == surfaceTriangles.size() && !surfaceTriangles.empty();
   std::vector<Vec3> alignedSum(aligned ? nv : 0);
   std::vector<int> alignedCount(aligned ? nv : 0);
+  // After a round moved the vertices from `previous` (the quads' scaled Jacobians there in
+  // `before`): the moves undone that took a quad to kMinScaledJacobian or below.
+  auto keepFromFolding = [&](const std::vector<Vec3>& previous) {
+    // The quads to check: all at first, then those depending on a vertex just put back.
+    std::vector<int> check, reverted;
+    jacobian.all(after);
+    for (int q = 0; q < quads.numQuads(); ++q)
+      if (before[q] > kMinScaledJacobian && after[q] <= kMinScaledJacobian) check.push_back(q);
+    while (!check.empty()) {
+      reverted.clear();
+      for (int q : check) {
+        // Its own corners first; if they had not moved, the neighbours that turned its normals.
+        bool own = false;
+        for (int v : quads.quads[q])
+          if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v), own = true;
+        if (own) continue;
+        for (int c : quads.quads[q])
+          for (int r : jacobian.quadsAround(c))
+            for (int v : quads.quads[r])
+              if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v);
+      }
+      report.revertedMoves += int(reverted.size());
+      std::vector<int> candidatesToCheck;
+      jacobian.dependents(reverted, candidatesToCheck);
+      jacobian.values(candidatesToCheck, after);
+      check.clear();
+      for (std::size_t i = 0; i < candidatesToCheck.size(); ++i)
+        if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
+    }
+  };
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
     jacobian.all(before);
@@ -495,33 +584,10 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     });
     for (int n : snapped) report.snappedMoves += n;
     quads.positions = next;
-    // The quads to check: all at first, then those depending on a vertex just put back.
-    std::vector<int> check, reverted;
-    jacobian.all(after);
-    for (int q = 0; q < quads.numQuads(); ++q)
-      if (before[q] > kMinScaledJacobian && after[q] <= kMinScaledJacobian) check.push_back(q);
-    while (!check.empty()) {
-      reverted.clear();
-      for (int q : check) {
-        // Its own corners first; if they had not moved, the neighbours that turned its normals.
-        bool own = false;
-        for (int v : quads.quads[q])
-          if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v), own = true;
-        if (own) continue;
-        for (int c : quads.quads[q])
-          for (int r : jacobian.quadsAround(c))
-            for (int v : quads.quads[r])
-              if (quads.positions[v] != previous[v]) quads.positions[v] = previous[v], reverted.push_back(v);
-      }
-      report.revertedMoves += int(reverted.size());
-      std::vector<int> candidatesToCheck;
-      jacobian.dependents(reverted, candidatesToCheck);
-      jacobian.values(candidatesToCheck, after);
-      check.clear();
-      for (std::size_t i = 0; i < candidatesToCheck.size(); ++i)
-        if (before[candidatesToCheck[i]] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) check.push_back(candidatesToCheck[i]);
-    }
+    keepFromFolding(previous);
   }
+  if (aligned && options.fieldRelaxationRounds > 0)
+    relaxRounds(quads, index, normals, options, fixed, neighbours, features.get(), jacobian, keepFromFolding, before, report);
   // Untangled twice from the smoothed positions: without, then with the nearest point on a
   // feature line among each vertex's candidates. Which local optimum the greedy moves reach
   // depends on that choice (a grid line beside a crease unfolds only once on it; elsewhere the

@@ -13,7 +13,10 @@
 // both sides, and only it can unfold them. No step folds a quad: after each round, every quad
 // the round took from above kMinScaledJacobian (0.1) to it or below, at any of its four corners, against its
 // own normal or the surface normal there (QuadJacobian, metrics/quad_quality.h), has the moves
-// it depends on undone. Last, the quads still folded or nearly flat are untangled, first
+// it depends on undone. With a field, the rounds are followed by the relaxation towards it
+// solved for all vertices at once (field_relaxation.h: local averages cannot turn a grid), the
+// vertices near feature lines kept out, its moves kept from folding the same way (those undone
+// tried again half and a quarter of the way). Last, the quads still folded or nearly flat are untangled, first
 // against the input surface's normal at each quad (which folded quads do not disturb: the
 // mean normal of the surface triangles its corners lie on), then against the surface normal
 // at each corner as it is measured: each vertex around them tries
@@ -52,6 +55,10 @@ struct SmoothingOptions {
   /// such a grid away from it (a fit per quad to one field direction, averaged over the quads
   /// around a vertex). 0: every free vertex moves.
   double keepGridAbove = 0;
+  /// With triangleDirections: rounds of the relaxation towards the field, solved for all
+  /// vertices at once (field_relaxation.h), after the iterations; and its anchor μ.
+  int fieldRelaxationRounds = 2;
+  double fieldRelaxationAnchor = 0.1;
   /// Worker threads for the per-vertex moves (0: all hardware threads); the result does not
   /// depend on it.
   int threads = 0;
@@ -63,6 +70,7 @@ struct SmoothingReport {
   int snappedMoves = 0;       ///< vertex moves that ended on a feature line
   int untangledMoves = 0;     ///< vertex moves of the untangling pass
   int repairedFolds = 0;      ///< quads unfolded by repairFolds (fold_repair.h) after the untangling
+  int relaxedMoves = 0;       ///< vertex moves of the relaxation towards the field that were kept (summed over its rounds)
 };
 
 /// `surfacePositions` / `surfaceTriangles`: the surface the quads sample (e.g. the layout's
