@@ -5,21 +5,14 @@
 
 #include <cmath>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 namespace fcql {
 namespace {
 
-/// An n×n grid of unit quads on the plane z = 0.
-QuadMesh planarGrid(int n) {
-  QuadMesh grid;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) grid.positions.push_back(Vec3(i, j, 0));
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      grid.quads.push_back({(n + 1) * j + i, (n + 1) * j + i + 1, (n + 1) * (j + 1) + i + 1, (n + 1) * (j + 1) + i});
-  return grid;
-}
+using test::planarGrid;
 
 /// The plane z = 0 around the grid, as two triangles.
 struct Plane {

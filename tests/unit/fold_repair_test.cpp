@@ -1,21 +1,14 @@
 #include "metrics/quad_quality.h"
 #include "quadrangulation/fold_repair.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 namespace fcql {
 namespace {
 
-/// An n×n grid of unit quads on the plane z = 0, and the plane as two triangles around it.
-QuadMesh planarGrid(int n) {
-  QuadMesh grid;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) grid.positions.push_back(Vec3(i, j, 0));
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      grid.quads.push_back({(n + 1) * j + i, (n + 1) * j + i + 1, (n + 1) * (j + 1) + i + 1, (n + 1) * (j + 1) + i});
-  return grid;
-}
+using test::planarGrid;
 
 int folded(const QuadMesh& mesh) {
   const QuadJacobian jacobian(mesh);

@@ -7,6 +7,7 @@
 #include "field/field_io.h"
 #include "mesh/closest_point_index.h"
 #include "mesh/mesh_io.h"
+#include "mesh/quad_mesh.h"
 #include "mesh/surface_mesh.h"
 #include "util/math_constants.h"
 
@@ -18,6 +19,17 @@
 #include <string>
 
 namespace fcql::test {
+
+/// An n×n grid of unit quads on the plane z = 0, counter-clockwise about +z.
+inline QuadMesh planarGrid(int n) {
+  QuadMesh grid;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) grid.positions.push_back(Vec3(i, j, 0));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      grid.quads.push_back({(n + 1) * j + i, (n + 1) * j + i + 1, (n + 1) * (j + 1) + i + 1, (n + 1) * (j + 1) + i});
+  return grid;
+}
 
 /// The largest distance from the triangles T over P to `other`, sampled on a barycentric grid
 /// of each triangle at most `spacing` apart (inside and along the edges): a dense reference
