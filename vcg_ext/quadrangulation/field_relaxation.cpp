@@ -1,8 +1,9 @@
 #include "quadrangulation/field_relaxation.h"
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fcql {
@@ -33,9 +34,41 @@ FieldRelaxation relaxTowardsField(const QuadMesh& quads, const ClosestPointIndex
   for (const auto& f : quads.quads)
     for (int k = 0; k < 4; ++k) meanEdge += (P[f[(k + 1) % 4]] - P[f[k]]).norm();
   meanEdge /= 4.0 * quads.numQuads();
-  std::vector<Eigen::Triplet<double>> entries;
-  std::vector<double> rhs;
-  entries.reserve(std::size_t(quads.numQuads()) * 4 * 2 * 4 + std::size_t(n));
+  // The normal equations assembled directly, in compressed rows (the matrix is symmetric, so
+  // they are its compressed columns too): per unknown vertex, its 2×2 blocks with itself and
+  // the unknown vertices it shares a quad edge with.
+  std::vector<std::vector<int>> adjacent(nv);
+  for (const auto& f : quads.quads)
+    for (int k = 0; k < 4; ++k) {
+      const int a = f[k], b = f[(k + 1) % 4];
+      if (var[a] >= 0 && var[b] >= 0) adjacent[a].push_back(b), adjacent[b].push_back(a);
+    }
+  std::vector<int> outer(std::size_t(n) + 1, 0);
+  for (int v = 0; v < nv; ++v) {
+    if (var[v] < 0) continue;
+    auto& list = adjacent[v];
+    list.push_back(v);
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    outer[var[v] + 1] = outer[var[v] + 2] = 2 * int(list.size());
+  }
+  for (int i = 0; i < n; ++i) outer[i + 1] += outer[i];
+  std::vector<int> inner(std::size_t(outer[n]));
+  std::vector<double> values(inner.size(), 0.0);
+  for (int v = 0; v < nv; ++v) {
+    if (var[v] < 0) continue;
+    for (int p = 0; p < 2; ++p) {
+      int at = outer[var[v] + p];
+      for (int w : adjacent[v]) inner[at++] = var[w], inner[at++] = var[w] + 1;
+    }
+  }
+  // The entry of row (vertex v, coordinate p) and column (vertex w, coordinate q).
+  auto entry = [&](int v, int p, int w, int q) -> double& {
+    const auto& list = adjacent[v];
+    const int k = int(std::lower_bound(list.begin(), list.end(), w) - list.begin());
+    return values[std::size_t(outer[var[v] + p] + 2 * k + q)];
+  };
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   for (const auto& f : quads.quads) {
     const int t = surface.closest((P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4).triangle;
     const Vec3& normal = triangleNormals[t];
@@ -55,34 +88,39 @@ FieldRelaxation relaxTowardsField(const QuadMesh& quads, const ClosestPointIndex
       Vec2 target = Vec2::Zero();
       target[along] = std::copysign(length, now[along]);
       for (int axis = 0; axis < 2; ++axis) {
+        // The row: Σ coefficient · unknown = value, over (vertex, coordinate) pairs.
         const double w = meanEdge / length * (axis == along ? kFieldRelaxationLengthWeight : 1.0);
-        const int row = int(rhs.size());
-        if (var[b] >= 0) {
-          entries.emplace_back(row, var[b], w * frame[axis].dot(t1[b]));
-          entries.emplace_back(row, var[b] + 1, w * frame[axis].dot(t2[b]));
+        const std::array<int, 2> vertex{b, a};
+        std::array<std::array<double, 2>, 2> coefficient;
+        for (int s = 0; s < 2; ++s) {
+          const double sign = s == 0 ? w : -w;
+          coefficient[s] = {sign * frame[axis].dot(t1[vertex[s]]), sign * frame[axis].dot(t2[vertex[s]])};
         }
-        if (var[a] >= 0) {
-          entries.emplace_back(row, var[a], -w * frame[axis].dot(t1[a]));
-          entries.emplace_back(row, var[a] + 1, -w * frame[axis].dot(t2[a]));
+        const double value = w * (target[axis] - now[axis]);
+        for (int s = 0; s < 2; ++s) {
+          if (var[vertex[s]] < 0) continue;
+          for (int p = 0; p < 2; ++p) {
+            rhs[var[vertex[s]] + p] += coefficient[s][p] * value;
+            for (int r = 0; r < 2; ++r) {
+              if (var[vertex[r]] < 0) continue;
+              for (int q = 0; q < 2; ++q) entry(vertex[s], p, vertex[r], q) += coefficient[s][p] * coefficient[r][q];
+            }
+          }
         }
-        rhs.push_back(w * (target[axis] - now[axis]));
       }
     }
   }
-  const double root = std::sqrt(anchor);
-  for (int i = 0; i < n; ++i) {
-    entries.emplace_back(int(rhs.size()), i, root);
-    rhs.push_back(0);
-  }
-  Eigen::SparseMatrix<double> A(int(rhs.size()), n);
-  A.setFromTriplets(entries.begin(), entries.end());
-  std::vector<Eigen::Triplet<double>>().swap(entries);
-  const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), Eigen::Index(rhs.size()));
-  const Eigen::SparseMatrix<double> normal = A.transpose() * A;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-  if (solver.info() != Eigen::Success) return result;
-  const Eigen::VectorXd x = solver.solve(A.transpose() * b);
-  if (solver.info() != Eigen::Success || !x.allFinite()) return result;
+  for (int v = 0; v < nv; ++v)
+    if (var[v] >= 0)
+      for (int p = 0; p < 2; ++p) entry(v, p, v, p) += anchor;
+  const Eigen::Map<const Eigen::SparseMatrix<double>> normalMatrix(n, n, outer[n], outer.data(), inner.data(), values.data());
+  // Conjugate gradients (the anchor bounds the condition number whatever the mesh's size).
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
+  solver.setTolerance(kFieldRelaxationTolerance);
+  solver.setMaxIterations(kFieldRelaxationIterations);
+  solver.compute(normalMatrix);
+  const Eigen::VectorXd x = solver.solve(rhs);
+  if (!x.allFinite()) return result;
   for (int v = 0; v < nv; ++v)
     if (var[v] >= 0) result.positions[v] = surface.closest(P[v] + t1[v] * x[var[v]] + t2[v] * x[var[v] + 1]).point;
   result.solved = true;
