@@ -297,29 +297,37 @@ Measured on the same machine, bench parameters; the table above is the run after
   weighed by its angle (mean edge / its length), its length kept with 0.3 of that weight, the
   moves anchored (μ = 0.1); two rounds; moves that take a quad to a scaled Jacobian of 0.1 or
   below are undone and tried again half and a quarter of the way; vertices within two edges of
-  a feature line stay. Before/after (misaligned quads, per face, scaled Jacobian min / mean,
+  a feature line stay. The normal equations are assembled directly and solved by conjugate
+  gradients (relative residual 1e-3, at most 100 iterations: as good as 200 on bunny, kitten,
+  eight, lilium and rockerarm, 50 a little worse): a direct factorisation (Eigen's
+  SimplicialLDLT, then CHOLMOD) cost 4 s a round on the bunny at `--scale 0.004` (154K quads),
+  where the whole quad stage took 6 s without the relaxation. Before/after (misaligned quads, per face, scaled Jacobian min / mean,
   Hausdorff; the same quads on every mesh):
 
  mesh | misaligned quads | per face | SJ min / mean | Hd %
 ---|---|---|---|---
  aqua_center | 0.9 → 0.6% | 0.8 → 0.6% | 0.55 / 0.99 → 0.20 / 1.00 | 0.19 → 0.19
- bunny | 8.5 → 6.2% | 2.3 → 1.9% | 0.15 / 0.98 → 0.10 / 0.98 | 0.88 → 0.78
+ bunny | 8.5 → 5.8% | 2.3 → 1.9% | 0.15 / 0.98 → 0.11 / 0.98 | 0.88 → 0.77
  camelhead | 10.4 → 7.5% | 3.6 → 3.1% | 0.11 / 0.98 → 0.10 / 0.99 | 0.80 → 0.95
- deckel | 12.5 → 8.3% | 1.6 → 1.8% | 0.12 / 0.98 → 0.11 / 0.98 | 0.96 → 0.96
+ deckel | 12.5 → 8.3% | 1.6 → 1.9% | 0.12 / 0.98 → 0.10 / 0.98 | 0.96 → 0.96
  dragon | 40.9 → 38.0% | 14.9 → 14.6% | −0.19 / 0.87 → −0.17 / 0.87 | 0.97 → 0.97
- eight | 8.5 → 4.5% | 1.8 → 1.2% | 0.13 / 0.98 → 0.10 / 0.98 | 0.68 → 0.73
+ eight | 8.5 → 4.5% | 1.8 → 1.2% | 0.13 / 0.98 → 0.12 / 0.98 | 0.68 → 0.73
  fandisk | 3.7 → 3.1% | 0.7 → 0.8% | 0.16 / 0.99 → 0.16 / 0.99 | 0.94 → 0.94
  fertility | 3.0 → 2.2% | 1.4 → 1.4% (paper 5.9%) | 0.49 / 0.99 → 0.24 / 0.99 | 0.84 → 0.84
  joint | 0.4 → 0.4% | 0.2 → 0.2% | 0.81 / 1.00 → 0.61 / 1.00 | 0.75 → 0.75
  kitten | 10.0 → 6.8% | 4.2 → 3.8% | 0.12 / 0.97 → 0.12 / 0.98 | 0.91 → 0.91
- lilium | 26.0 → 17.6% | 13.3 → 13.0% | 0.06 / 0.96 → 0.06 / 0.96 | 0.60 → 0.60
+ lilium | 26.0 → 17.6% | 13.3 → 13.2% | 0.06 / 0.96 → 0.06 / 0.96 | 0.60 → 0.73
  rockerarm | 7.2 → 5.8% | 3.1 → 2.8% (paper 2.6%) | 0.13 / 0.98 → 0.12 / 0.98 | 0.97 → 0.97
 
   Folded quads: none on the 11 smaller meshes at 2% and 1% of the diagonal (e2e.cli_run_shared);
-  the dragon 10 at 2% (was 10) and 8 at 1% (was 9). Time, alternating on the same machine: the
-  camelhead's quad stage 3.5 → 4.5 s (whole run +15%), the dragon's 27.4 → 28.5 s; the other
-  meshes' quad stages stay under 1 s but rockerarm's (2.1–3.1 s). The time columns of the two
-  tables are runs of different speed.
+  the dragon 10 at 2% (was 10) and 8 at 1% (was 9). Time: with the direct solver, alternating on
+  the same machine, the camelhead's quad stage took 3.5 → 4.5 s (whole run +15%) and the
+  dragon's 27.4 → 28.5 s; with the conjugate gradients the table above has the camelhead's at
+  3.9 s (3.5 s in the table before) and the dragon's within its run-to-run spread (28–34 s); the
+  other meshes' quad stages stay under 1.1 s but rockerarm's (2.3 s). The bunny at `--scale
+  0.004`: quad stage 11.2 s without the relaxation, 22.8 s with conjugate gradients at 200
+  iterations and a matrix product (the machine loaded by a CI run); 100 iterations and the
+  direct assembly halve the relaxation's share.
 - **Refinements that get no closer no longer end the stage's refinements**: the next size is
   tried, up to `maxRefinements`, and the closest mesh kept. The camelhead's field-aligned quads,
   1.15% of the diagonal from the surface after one refinement, came 1.39% after the second, which
