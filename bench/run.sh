@@ -324,10 +324,11 @@ Measured on the same machine, bench parameters; the table above is the run after
   the same machine, the camelhead's quad stage took 3.5 → 4.5 s (whole run +15%) and the
   dragon's 27.4 → 28.5 s; with the conjugate gradients the table above has the camelhead's at
   3.9 s (3.5 s in the table before) and the dragon's within its run-to-run spread (28–34 s); the
-  other meshes' quad stages stay under 1.1 s but rockerarm's (2.3 s). The bunny at `--scale
-  0.004`: quad stage 11.2 s without the relaxation, 22.8 s with conjugate gradients at 200
-  iterations and a matrix product (the machine loaded by a CI run); 100 iterations and the
-  direct assembly halve the relaxation's share.
+  other meshes' quad stages stay under 1.1 s but rockerarm's (2.3 s). Finer quads cost more: the
+  bunny at `--scale 0.004` (154K quads), alternating with the build before the relaxation, took
+  4.6 → 7.2–7.8 s in its quad stage and 7.0 → 9.5–10.2 s in all (+40%), for 7.5% → 5.8%
+  misaligned quads; one round instead of two took 6.1 s but left more quads off the field
+  (kitten 7.8%, lilium 20.4%, camelhead 8.3%), and was not kept.
 - **Refinements that get no closer no longer end the stage's refinements**: the next size is
   tried, up to `maxRefinements`, and the closest mesh kept. The camelhead's field-aligned quads,
   1.15% of the diagonal from the surface after one refinement, came 1.39% after the second, which
