@@ -5,7 +5,7 @@
 // singularity is turned: the layout's sides there leave the singularity within the tracing's
 // angle tolerance φ of the field, and the quads along them follow the sides, not the field (on
 // the kitten, 15% of the quads with an edge on a layout side were more than π/16 off the field,
-// against 7% of the others, and 22% of those within three rings of a singularity).
+// against 7% of the others, and 22% of the quads within three rings of a singularity).
 //
 // One sparse least-squares problem over the tangent moves x_v (two unknowns per free vertex, in
 // a basis of the surface's tangent plane at the vertex) asks every edge a→b of every quad q to
@@ -40,7 +40,7 @@ constexpr int kFieldRelaxationIterations = 100;
 
 struct FieldRelaxation {
   std::vector<Vec3> positions;  ///< per vertex: where it would go (on the surface); fixed ones where they were
-  bool solved = false;          ///< false: nothing to solve or the system could not be factored
+  bool solved = false;          ///< false: nothing to solve or no finite solution (positions as they were)
 };
 
 /// `triangleNormals` and `triangleDirections` are per triangle of `surface` (a zero direction:
