@@ -2,10 +2,9 @@
 #include "quadrangulation/field_relaxation.h"
 #include "quadrangulation/quad_smoothing.h"
 #include "util/math_constants.h"
+#include "test_support.h"
 
 #include <cmath>
-
-#include "test_support.h"
 
 #include <gtest/gtest.h>
 

@@ -354,23 +354,18 @@ void relaxRounds(QuadMesh& quads, const ClosestPointIndex& index, const std::vec
     edge /= double(neighbours[v].size());
     if (features->closest(quads.positions[v]).distance < kRelaxFeatureGap * edge) movable[v] = 0;
   }
-  // The scaled Jacobians at `at` into `before`, for keepFromFolding.
-  auto measureAt = [&](const std::vector<Vec3>& at) {
-    std::vector<Vec3> now = std::move(quads.positions);
-    quads.positions = at;
-    jacobian.all(before);
-    quads.positions = std::move(now);
-  };
+  // keepFromFolding compares with `before`: the scaled Jacobians where the moves start.
   for (int round = 0; round < options.fieldRelaxationRounds; ++round) {
     const FieldRelaxation relaxed =
         relaxTowardsField(quads, index, normals, options.triangleDirections, movable, options.fieldRelaxationAnchor);
     if (!relaxed.solved) break;
     const std::vector<Vec3> previous = quads.positions;
-    measureAt(previous);
+    jacobian.all(before);
     quads.positions = relaxed.positions;
     keepFromFolding(previous);
     for (double share : {0.5, 0.25}) {
       const std::vector<Vec3> kept = quads.positions;
+      jacobian.all(before);
       bool any = false;
       for (int v = 0; v < nv; ++v)
         if (kept[v] == previous[v] && relaxed.positions[v] != previous[v]) {
@@ -378,7 +373,6 @@ void relaxRounds(QuadMesh& quads, const ClosestPointIndex& index, const std::vec
           any = true;
         }
       if (!any) break;
-      measureAt(kept);
       keepFromFolding(kept);
     }
     for (int v = 0; v < nv; ++v) report.relaxedMoves += quads.positions[v] != previous[v];
