@@ -119,15 +119,28 @@ ClosestPoint ClosestPointIndex::closest(const Vec3& p) const {
     }
     return gap;
   };
+  // The squared distance from p to the slab of cells i along axis k (0 inside it): a cell no
+  // nearer than the best so far holds no nearer triangle, and is skipped. So a shell beyond p's
+  // own cell costs only the cells next to the walls p is near, not all of it.
+  auto gap2 = [&](int k, int i) {
+    const double lo = origin_[k] + i * cell_, hi = lo + cell_;
+    const double d = p[k] < lo ? lo - p[k] : p[k] > hi ? p[k] - hi : 0.0;
+    return d * d;
+  };
   for (int r = 0; r <= maxRing; ++r) {
     if (best.triangle >= 0 && best.distance <= beyond(r)) break;
     for (int z = c[2] - r; z <= c[2] + r; ++z) {
       if (z < 0 || z >= dims_[2]) continue;
+      const double dz = gap2(2, z);
+      if (dz >= best.distance * best.distance) continue;
       for (int y = c[1] - r; y <= c[1] + r; ++y) {
         if (y < 0 || y >= dims_[1]) continue;
+        const double dyz = dz + gap2(1, y);
+        if (dyz >= best.distance * best.distance) continue;
         const bool faceShell = std::abs(z - c[2]) == r || std::abs(y - c[1]) == r;
         for (int x = c[0] - r; x <= c[0] + r; x += (faceShell ? 1 : std::max(1, 2 * r))) {
           if (x < 0 || x >= dims_[0]) continue;
+          if (dyz + gap2(0, x) >= best.distance * best.distance) continue;
           visit(x, y, z);
         }
       }

@@ -2,8 +2,9 @@
 //
 // A uniform grid over the triangles' bounding box (about two cells per triangle); each
 // triangle is listed in every cell its bounding box overlaps. A query visits the cells in
-// growing cubic shells around the query point and stops as soon as no unvisited shell can
-// hold a closer point, so the answer is exact (up to rounding), not an approximation.
+// growing cubic shells around the query point, skipping those farther than the best so far,
+// and stops as soon as no unvisited shell can hold a closer point, so the answer is exact (up
+// to rounding), not an approximation.
 #pragma once
 
 #include "mesh/surface_mesh.h"
