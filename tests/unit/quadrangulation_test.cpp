@@ -689,6 +689,47 @@ TEST(Quadrangulation, SmoothingUntanglesAFoldedQuad) {
   for (const Vec3& p : grid.positions) EXPECT_NEAR(p.z(), 0, 1e-12);
 }
 
+TEST(Quadrangulation, SmoothingMovesOnlyTheVerticesNotFrozen) {
+  // A 10×10 grid of unit quads on the plane z = 0 with two inner vertices pushed across the
+  // diagonals of their quads: one fold in the left half, one in the right. With the right half
+  // frozen (as reduceFolds freezes all but the region around the folds it samples again), the
+  // smoothing unfolds the left fold and leaves every frozen vertex exactly where it was, the
+  // right fold included.
+  const int n = 10;
+  QuadMesh grid = test::planarGrid(n);
+  auto vertex = [&](int i, int j) { return (n + 1) * j + i; };
+  grid.positions[vertex(2, 5)] = Vec3(3.3, 6.3, 0);  // left: beyond (3, 6)
+  grid.positions[vertex(8, 5)] = Vec3(9.3, 6.3, 0);  // right: beyond (9, 6)
+  auto foldedIn = [&](bool left) {
+    int folded = 0;
+    for (int q = 0; q < grid.numQuads(); ++q)
+      folded += scaledJacobian(grid, q) <= 0 && (q % n < n / 2) == left;
+    return folded;
+  };
+  ASSERT_GE(foldedIn(true), 1);
+  ASSERT_GE(foldedIn(false), 1);
+  const std::vector<Vec3> plane = {Vec3(-1, -1, 0), Vec3(n + 1, -1, 0), Vec3(n + 1, n + 1, 0), Vec3(-1, n + 1, 0)};
+  const std::vector<std::array<int, 3>> triangles = {{0, 1, 2}, {0, 2, 3}};
+  SmoothingOptions options;
+  options.iterations = 3;
+  options.frozen.assign(grid.positions.size(), 0);
+  for (int j = 0; j <= n; ++j)
+    for (int i = n / 2 + 1; i <= n; ++i) options.frozen[vertex(i, j)] = 1;
+  const QuadMesh start = grid;
+  smoothQuadMesh(grid, plane, triangles, options);
+  EXPECT_EQ(foldedIn(true), 0);
+  EXPECT_GE(foldedIn(false), 1);
+  int moved = 0;
+  for (std::size_t v = 0; v < grid.positions.size(); ++v) {
+    if (options.frozen[v]) EXPECT_EQ(grid.positions[v], start.positions[v]) << "frozen vertex " << v << " moved";
+    else moved += grid.positions[v] != start.positions[v];
+    EXPECT_NEAR(grid.positions[v].z(), 0, 1e-12);
+  }
+  EXPECT_GT(moved, 0);
+  options.frozen.pop_back();
+  EXPECT_THROW(smoothQuadMesh(grid, plane, triangles, options), std::invalid_argument);
+}
+
 TEST(Quadrangulation, UntanglingSlidesAVertexAlongACrease) {
   // A sheet bent at a right angle along the x axis: the face y = 0..2 on z = 0 and the face
   // z = 0..-2 on y = 0, quads of 0.5 on both, their middle row of vertices on the crease. One
@@ -803,13 +844,8 @@ TEST(Quadrangulation, SmoothingIsUndoneAroundPointsFarFromTheSurface) {
   // A 9×9 grid of unit quads; "smoothing" moved every vertex by (0.2, 0.1). Around a far point
   // at vertex (4, 4) with radius 2: vertices within 1 go back all the way, those between 1
   // and 2 part of the way, the others not at all. A return that would fold a quad is skipped.
-  QuadMesh grid;
   const int n = 9;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) grid.positions.push_back(Vec3(i, j, 0));
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      grid.quads.push_back({(n + 1) * j + i, (n + 1) * j + i + 1, (n + 1) * (j + 1) + i + 1, (n + 1) * (j + 1) + i});
+  QuadMesh grid = test::planarGrid(n);
   const std::vector<Vec3> sampled = grid.positions;
   const Vec3 shift(0.2, 0.1, 0);
   for (Vec3& p : grid.positions) p += shift;

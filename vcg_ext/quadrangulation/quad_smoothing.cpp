@@ -271,22 +271,28 @@ void untangle(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPo
 /// best fit its quads: centred at the quad's centre, sides along the cross directions closest to
 /// the quad's own two directions (midpoints of opposite edges), extents the quad's along them.
 /// The field and normal of a quad are those of the surface triangle nearest to its centre.
+/// Quads whose corners are all `frozen` (SmoothingOptions::frozen, may be empty) are skipped.
 void alignedTargets(const QuadMesh& quads, const ClosestPointIndex& index, const std::vector<Vec3>& normals,
-                    const std::vector<Vec3>& directions, int threads, std::vector<Vec3>& sum, std::vector<int>& count) {
+                    const std::vector<Vec3>& directions, const std::vector<char>& frozen, int threads,
+                    std::vector<Vec3>& sum, std::vector<int>& count) {
   std::fill(sum.begin(), sum.end(), Vec3::Zero());
   std::fill(count.begin(), count.end(), 0);
   const auto& P = quads.positions;
   auto centreOf = [&](const std::array<int, 4>& f) { return Vec3((P[f[0]] + P[f[1]] + P[f[2]] + P[f[3]]) / 4); };
   // The nearest triangles on the worker threads, the sums in order.
-  std::vector<int> nearest(quads.quads.size());
+  std::vector<int> nearest(quads.quads.size(), -1);
+  auto allFixed = [&](const std::array<int, 4>& f) {
+    return !frozen.empty() && frozen[f[0]] && frozen[f[1]] && frozen[f[2]] && frozen[f[3]];
+  };
   runOnWorkerThreads(threads, [&](int w) {
     for (std::size_t q = std::size_t(w); q < quads.quads.size(); q += std::size_t(threads))
-      nearest[q] = index.closest(centreOf(quads.quads[q])).triangle;
+      if (!allFixed(quads.quads[q])) nearest[q] = index.closest(centreOf(quads.quads[q])).triangle;
   });
   for (std::size_t q = 0; q < quads.quads.size(); ++q) {
     const auto& f = quads.quads[q];
     const Vec3 centre = centreOf(f);
     const int t = nearest[q];
+    if (t < 0) continue;
     const Vec3& n = normals[t];
     Vec3 d = directions[t] - n * n.dot(directions[t]);
     if (!(d.norm() > 0) || n.isZero()) continue;
@@ -309,14 +315,16 @@ void alignedTargets(const QuadMesh& quads, const ClosestPointIndex& index, const
 /// The vertices a smoothing round moves: all, unless `keepGridAbove` > 0 and the quads follow
 /// the field (`alignedCount`: per vertex, its quads fitted to the field): then only those
 /// within kKeepGridRings rings of a quad whose scaled Jacobian (`jacobianOf`) is below
-/// `keepGridAbove`, or with a quad around them that has no field (a mean-value patch).
+/// `keepGridAbove`, or with a quad around them that has no field (a mean-value patch; not
+/// asked of `frozen` vertices, whose quads alignedTargets may skip).
 std::vector<char> movingVertices(const QuadMesh& quads, const QuadJacobian& jacobian, const std::vector<double>& jacobianOf,
                                  const std::vector<std::vector<int>>& neighbours, const std::vector<int>& alignedCount,
-                                 double keepGridAbove) {
+                                 const std::vector<char>& frozen, double keepGridAbove) {
   const int nv = quads.numVertices();
   std::vector<char> moving(nv, 1);
   if (!(keepGridAbove > 0) || alignedCount.size() != std::size_t(nv)) return moving;
-  for (int v = 0; v < nv; ++v) moving[v] = alignedCount[v] < int(jacobian.quadsAround(v).size());
+  for (int v = 0; v < nv; ++v)
+    moving[v] = (frozen.empty() || !frozen[v]) && alignedCount[v] < int(jacobian.quadsAround(v).size());
   for (int q = 0; q < quads.numQuads(); ++q)
     if (jacobianOf[q] < keepGridAbove)
       for (int c : quads.quads[q]) moving[c] = 1;
@@ -379,17 +387,17 @@ void relaxRounds(QuadMesh& quads, const ClosestPointIndex& index, const std::vec
   }
 }
 
-}  // namespace
-
-SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
-                               const std::vector<std::array<int, 3>>& surfaceTriangles,
-                               const SmoothingOptions& options) {
+/// smoothQuadMesh on the whole of `quads` (its frozen vertices kept where they are).
+SmoothingReport smoothWhole(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
+                            const std::vector<std::array<int, 3>>& surfaceTriangles, const SmoothingOptions& options) {
   if (options.iterations < 0) throw std::invalid_argument("smoothing: the number of iterations must be >= 0");
   if (!(options.step > 0 && options.step <= 1)) throw std::invalid_argument("smoothing: the step must be in (0, 1]");
   if (!(options.keepGridAbove >= 0 && options.keepGridAbove <= 1))
     throw std::invalid_argument("smoothing: keepGridAbove must be in [0, 1]");
   if (options.fieldRelaxationRounds < 0) throw std::invalid_argument("smoothing: the relaxation rounds must be >= 0");
   if (!(options.fieldRelaxationAnchor > 0)) throw std::invalid_argument("smoothing: the relaxation's anchor must be positive");
+  if (!options.frozen.empty() && options.frozen.size() != quads.positions.size())
+    throw std::invalid_argument("smoothing: one frozen flag per vertex, or none");
   SmoothingReport report;
   if (options.iterations == 0 || quads.numQuads() == 0) return report;
 
@@ -497,6 +505,9 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
     }
   }
   for (int v = 0; v < nv; ++v) report.fixedVertices += fixed[v] || neighbours[v].empty();
+  // Frozen vertices stay as border vertices do (counted above only if they are fixed anyway).
+  for (int v = 0; v < nv && !options.frozen.empty(); ++v)
+    if (options.frozen[v]) fixed[v] = kFixed, repairMoves[v] = kStays;
 
   // A round moves every free vertex at once; then every quad that the round took from above
   // kMinScaledJacobian to it or below (folded, turned against the surface or nearly flat, at
@@ -543,8 +554,8 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   for (int it = 0; it < options.iterations; ++it) {
     const std::vector<Vec3> previous = quads.positions;
     jacobian.all(before);
-    if (aligned) alignedTargets(quads, index, normals, options.triangleDirections, threads, alignedSum, alignedCount);
-    const std::vector<char> moving = movingVertices(quads, jacobian, before, neighbours, aligned ? alignedCount : std::vector<int>{},
+    if (aligned) alignedTargets(quads, index, normals, options.triangleDirections, options.frozen, threads, alignedSum, alignedCount);
+    const std::vector<char> moving = movingVertices(quads, jacobian, before, neighbours, aligned ? alignedCount : std::vector<int>{}, options.frozen,
                                                     options.keepGridAbove);
     // Each vertex's move depends on the previous positions only: the vertices are shared
     // among the worker threads (interleaved), the result the same for any number of them.
@@ -633,6 +644,55 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   if (keptFolds > 0 && snappedFolds < keptFolds) quads.positions = std::move(snapped.positions), keptReport = snappedReport;
   report = keptReport;
   report.repairedFolds = repairFolds(quads, index, features.get(), normals, repairMoves, jacobian);
+  return report;
+}
+
+}  // namespace
+
+SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
+                               const std::vector<std::array<int, 3>>& surfaceTriangles,
+                               const SmoothingOptions& options) {
+  const int nv = quads.numVertices();
+  if (options.frozen.empty() || options.frozen.size() != std::size_t(nv) || options.iterations <= 0)
+    return smoothWhole(quads, surfacePositions, surfaceTriangles, options);
+  // Only some vertices move: they are smoothed in the part of the mesh their figures depend
+  // on, the quads within two rings of them (the scaled Jacobian of a quad around a moving
+  // vertex takes the normals at its corners from the quads around those), the rest of that
+  // part frozen. The moving vertices' own quads and their neighbours' are all in the part, so
+  // its rim (a border there) holds only frozen vertices.
+  std::vector<char> near(nv, 0);
+  for (int v = 0; v < nv; ++v) near[v] = !options.frozen[v];
+  {
+    std::vector<char> grown = near;
+    for (const auto& q : quads.quads)
+      if (near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]])
+        for (int v : q) grown[v] = 1;
+    near.swap(grown);
+  }
+  QuadMesh part;
+  SmoothingOptions partOptions = options;
+  partOptions.frozen.clear();
+  std::vector<int> index(nv, -1), original;
+  for (int q = 0; q < quads.numQuads(); ++q) {
+    const auto& f = quads.quads[q];
+    if (!(near[f[0]] || near[f[1]] || near[f[2]] || near[f[3]])) continue;
+    std::array<int, 4> g;
+    for (int k = 0; k < 4; ++k) {
+      if (index[f[k]] < 0) {
+        index[f[k]] = int(original.size());
+        original.push_back(f[k]);
+        part.positions.push_back(quads.positions[f[k]]);
+        partOptions.frozen.push_back(options.frozen[f[k]]);
+      }
+      g[k] = index[f[k]];
+    }
+    part.quads.push_back(g);
+    if (q < int(quads.quadPatch.size())) part.quadPatch.push_back(quads.quadPatch[q]);
+  }
+  if (part.quads.empty()) return SmoothingReport{};
+  SmoothingReport report = smoothWhole(part, surfacePositions, surfaceTriangles, partOptions);
+  for (std::size_t i = 0; i < original.size(); ++i)
+    if (!options.frozen[original[i]]) quads.positions[original[i]] = part.positions[i];
   return report;
 }
 

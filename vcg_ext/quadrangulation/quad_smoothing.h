@@ -59,13 +59,17 @@ struct SmoothingOptions {
   /// vertices at once (field_relaxation.h), after the iterations; and its anchor μ.
   int fieldRelaxationRounds = 2;
   double fieldRelaxationAnchor = 0.1;
+  /// Per quad-mesh vertex, 1 for one that stays where it is, as a border vertex does (empty:
+  /// none). A pass that smooths again only part of a mesh smoothed before (reduceFolds in
+  /// quadrangulation.cpp) freezes the rest; the figures then cost in proportion to that part.
+  std::vector<char> frozen;
   /// Worker threads for the per-vertex moves (0: all hardware threads); the result does not
   /// depend on it.
   int threads = 0;
 };
 
 struct SmoothingReport {
-  int fixedVertices = 0;      ///< border and feature vertices
+  int fixedVertices = 0;      ///< border and feature vertices (not those frozen by SmoothingOptions::frozen)
   int revertedMoves = 0;      ///< vertex moves undone because they folded a quad
   int snappedMoves = 0;       ///< vertex moves that ended on a feature line
   int untangledMoves = 0;     ///< vertex moves of the untangling pass
@@ -74,7 +78,8 @@ struct SmoothingReport {
 };
 
 /// `surfacePositions` / `surfaceTriangles`: the surface the quads sample (e.g. the layout's
-/// refined triangles). Throws std::invalid_argument for bad options.
+/// refined triangles). Throws std::invalid_argument for bad options (and for `frozen` not empty
+/// nor one entry per vertex).
 SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
                                const std::vector<std::array<int, 3>>& surfaceTriangles,
                                const SmoothingOptions& options);
