@@ -280,6 +280,43 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## The quad stage's fold rounds and bound fallbacks smooth only where they change the mesh (issue 21, eighteenth session, 2026-12-06)
+
+Measured on the same machine, bench parameters; the table above is the run after it.
+
+- **Where the dragon's quad stage went** (instrumented, one run; 23.5 s after the change below to
+  the closest-point queries): the side lengths 2.3 s; nine passes of sampling (0.7–0.8 s each)
+  and smoothing (2.0–2.5 s each: the smoothing rounds and the relaxation 0.5–1.0 s, the
+  untangling 0.5–0.8 s, the fold repair 0.4–0.9 s): the field-aligned pass, the same smoothed
+  everywhere (it missed the distance bound), the pass with 90 patches' sides by arc length
+  (which meets it), four fold attempts (reduceFolds: the plain smoothing, then the patches
+  around the folds sampled again, three times), and the pass without the field that decides
+  whether the stage without it folds fewer. A third of all the run's time was closest-point
+  queries, half of them in the untangling's pattern search.
+- **Closest-point queries skip the cells farther than the best point so far**
+  (`mesh/closest_point_index.cpp`): a query that has to look beyond its own cell now visits only
+  the cells by the walls it is near, not the whole shell. Exact as before (the brute-force test
+  agrees). On the dragon's 25K triangles, 400K queries: on the surface 580 → 590 ns, 0.1 edge
+  off 1250 → 775 ns, 0.5 edge off 2460 → 1315 ns, 2 edges off 4200 → 2700 ns. Tried and not
+  kept: each cell's triangles stored with their boxes inline in float (slower: 810–1050 ns at
+  0.0–0.1 edge off), and 4–16 cells per triangle instead of 2 (no better off the surface).
+- **Fold rounds and bound fallbacks smooth only around what they change**
+  (`SmoothingOptions::frozen`; `reduceFolds` and `quadrangulateOnce` in
+  `quadrangulation/quadrangulation.cpp`). A fold attempt starts from the samples within three
+  rings of the folds' corners and of the patches it samples again, keeps the smoothed positions
+  elsewhere, and smooths only the quads within two rings of the moving vertices (their figures
+  depend on no others); the pass that samples some patches' sides by arc length for the
+  distance bound does the same around those patches. A fold attempt costs 0.4–0.9 s on the
+  dragon instead of 2.0–2.5 s. As they are cheap, each fold round now tries both the plain
+  smoothing and the patches sampled again from the same mesh and keeps the one that folds fewer
+  (before: the first that folded fewer than the mesh, then only the second way).
+- **Before → after** (the bench table before this session, on a slower run of the same machine,
+  against the table above): the dragon's quad stage 33.7 → 20.1 s (whole run 48.0 → 33.5 s),
+  with 8 folded quads as before (minimum scaled Jacobian −0.17 → −0.81: a different fold is the
+  worst), misaligned quads 38.0 → 36.9%, per face 14.6 → 14.5%. The other eleven meshes give the
+  same quads and figures: neither the fold rounds nor the patch-wise bound fallback run on them
+  (lilium at `--scale 0.0075` keeps its 12 folds: the stage without the field is kept there).
+
 ## The quads turned to the field by a relaxation solved for all vertices at once (issue 21, seventeenth session, 2026-12-06)
 
 Measured on the same machine, bench parameters; the table above is the run after it.
