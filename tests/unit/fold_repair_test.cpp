@@ -52,5 +52,36 @@ TEST(FoldRepair, AnUnfoldedMeshIsLeftAsItIs) {
   EXPECT_EQ(grid.positions, copy.positions);
 }
 
+TEST(FoldRepair, WithAMarginANearlyFlatQuadIsLiftedAboveIt) {
+  // A 4×4 grid with vertex (2, 2) pulled almost onto the diagonal of the quad below and left of
+  // it: that quad's corner there is nearly flat (scaled Jacobian about 0.012), none is folded.
+  // Without a margin nothing is to repair; with a margin of 0.02 the quad is lifted above it,
+  // no quad folds and the border stays.
+  const int n = 4;
+  QuadMesh grid = planarGrid(n);
+  auto at = [&](int i, int j) { return (n + 1) * j + i; };
+  grid.positions[at(2, 2)] = Vec3(1.503, 1.503, 0);
+  auto least = [](const QuadMesh& mesh) {
+    std::vector<double> j;
+    QuadJacobian(mesh).all(j);
+    return *std::min_element(j.begin(), j.end());
+  };
+  ASSERT_GT(least(grid), 0);
+  ASSERT_LT(least(grid), 0.02);
+  const std::vector<Vec3> plane = {Vec3(-1, -1, 0), Vec3(n + 1, -1, 0), Vec3(n + 1, n + 1, 0), Vec3(-1, n + 1, 0)};
+  const ClosestPointIndex surface(plane, {{0, 1, 2}, {0, 2, 3}});
+  const std::vector<Vec3> normals(2, Vec3(0, 0, 1));
+  std::vector<char> movable(grid.positions.size(), 0);
+  for (int j = 1; j < n; ++j)
+    for (int i = 1; i < n; ++i) movable[at(i, j)] = kOnSurface;
+  const QuadMesh copy = grid;
+  EXPECT_EQ(repairFolds(grid, surface, nullptr, normals, movable, QuadJacobian(grid)), 0);
+  EXPECT_EQ(grid.positions, copy.positions);
+  EXPECT_EQ(repairFolds(grid, surface, nullptr, normals, movable, QuadJacobian(grid), 0.02), 1);
+  EXPECT_GT(least(grid), 0.02);
+  EXPECT_EQ(folded(grid), 0);
+  for (int k = 0; k <= n; ++k) EXPECT_EQ(grid.positions[at(k, 0)], copy.positions[at(k, 0)]);
+}
+
 }  // namespace
 }  // namespace fcql

@@ -45,10 +45,10 @@ double quadEnergy(const QuadMesh& mesh, int q, const std::vector<Vec3>& normal, 
   return e;
 }
 
-/// The movable vertices within `rings` rings (along quad edges) of the corners of folded
-/// quads, split into connected parts.
+/// The movable vertices within `rings` rings (along quad edges) of the corners of the quads
+/// folded or at most `margin`, split into connected parts.
 std::vector<Part> regionParts(const QuadMesh& mesh, const QuadJacobian& jacobian, const std::vector<char>& movable,
-                              const std::vector<double>& figure, int rings) {
+                              const std::vector<double>& figure, int rings, double margin) {
   const int nv = mesh.numVertices();
   auto neighbours = [&](int v, std::vector<int>& out) {
     out.clear();
@@ -61,7 +61,7 @@ std::vector<Part> regionParts(const QuadMesh& mesh, const QuadJacobian& jacobian
   std::vector<char> inRegion(nv, 0);
   std::vector<int> frontier, grown, around;
   for (int q = 0; q < mesh.numQuads(); ++q)
-    if (figure[q] <= 0)
+    if (figure[q] <= margin)
       for (int v : mesh.quads[q])
         if (!inRegion[v]) inRegion[v] = 1, frontier.push_back(v);
   for (int ring = 0; ring < rings; ++ring) {
@@ -227,16 +227,20 @@ void descend(QuadMesh& mesh, const Part& part, const QuadJacobian& jacobian, con
 }  // namespace
 
 int repairFolds(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPointIndex* features,
-                const std::vector<Vec3>& triangleNormals, const std::vector<char>& moves, const QuadJacobian& jacobian) {
+                const std::vector<Vec3>& triangleNormals, const std::vector<char>& moves, const QuadJacobian& jacobian,
+                double margin) {
+  margin = std::max(margin, 0.0);
   std::vector<char> movable(moves.size());
   for (std::size_t v = 0; v < moves.size(); ++v) movable[v] = moves[v] == kOnSurface || (features && moves[v] == kAlongFeature);
   std::vector<double> figure;
   jacobian.all(figure);
-  const auto foldedCount = [](const std::vector<double>& f) {
-    return int(std::count_if(f.begin(), f.end(), [](double j) { return j <= 0; }));
+  // How bad: the folded quads, then those at or below the margin (folded ones included).
+  const auto badness = [margin](const std::vector<double>& f) {
+    return std::make_pair(int(std::count_if(f.begin(), f.end(), [](double j) { return j <= 0; })),
+                          int(std::count_if(f.begin(), f.end(), [margin](double j) { return j <= margin; })));
   };
-  const int before = foldedCount(figure);
-  if (before == 0) return 0;
+  const auto before = badness(figure);
+  if (before.second == 0) return 0;
   std::vector<Vec3> normal(quads.positions.size(), Vec3::Zero());
   const auto place = [&](int v, const Vec3& p) {
     return (moves[v] == kAlongFeature ? features->closest(p) : surface.closest(p)).point;
@@ -244,26 +248,27 @@ int repairFolds(QuadMesh& quads, const ClosestPointIndex& surface, const Closest
   std::vector<int> around;
   std::vector<double> was, now;
   for (int rings : {1, 2, 4, 8}) {
-    for (const Part& part : regionParts(quads, jacobian, movable, figure, rings)) {
+    for (const Part& part : regionParts(quads, jacobian, movable, figure, rings, margin)) {
       jacobian.dependents(part.vertices, around);
       jacobian.values(around, was);
-      if (std::none_of(was.begin(), was.end(), [](double j) { return j <= 0; })) continue;
+      if (std::none_of(was.begin(), was.end(), [margin](double j) { return j <= margin; })) continue;
       std::vector<Vec3> kept;
       for (int v : part.vertices) kept.push_back(quads.positions[v]);
       cornerNormals(quads, part, jacobian, surface, triangleNormals, normal);
       descend(quads, part, jacobian, place, normal, false);
       descend(quads, part, jacobian, place, normal, true);
       jacobian.values(around, now);
-      bool keep = foldedCount(now) < foldedCount(was);
+      bool keep = badness(now) < badness(was);
       for (std::size_t i = 0; i < around.size() && keep; ++i)
         keep = was[i] <= 0 || now[i] >= std::min(was[i], kFloor);
       if (!keep)
         for (std::size_t i = 0; i < part.vertices.size(); ++i) quads.positions[part.vertices[i]] = kept[i];
     }
     jacobian.all(figure);
-    if (foldedCount(figure) == 0) break;
+    if (badness(figure).second == 0) break;
   }
-  return before - foldedCount(figure);
+  const auto after = badness(figure);
+  return margin > 0 ? before.second - after.second : before.first - after.first;
 }
 
 }  // namespace fcql

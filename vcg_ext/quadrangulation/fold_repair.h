@@ -34,8 +34,12 @@ enum RepairMove : char { kStays = 0, kOnSurface = 1, kAlongFeature = 2 };
 
 /// `triangleNormals`: the unit normal of each triangle of `surface`; `features`: the feature
 /// lines as degenerate triangles (may be null when no vertex moves kAlongFeature);
-/// `moves[v]`: a RepairMove per vertex. Returns how many quads were unfolded.
+/// `moves[v]`: a RepairMove per vertex. With a `margin` > 0, quads at or below it (folded, or
+/// nearly flat at a corner) are repaired too: a part is then kept when it leaves fewer folded
+/// quads, or as many and fewer at or below the margin. Returns how many quads were unfolded
+/// (how many fewer are at or below the margin, with one).
 int repairFolds(QuadMesh& quads, const ClosestPointIndex& surface, const ClosestPointIndex* features,
-                const std::vector<Vec3>& triangleNormals, const std::vector<char>& moves, const QuadJacobian& jacobian);
+                const std::vector<Vec3>& triangleNormals, const std::vector<char>& moves, const QuadJacobian& jacobian,
+                double margin = 0);
 
 }  // namespace fcql
