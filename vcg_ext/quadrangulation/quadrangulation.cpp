@@ -127,7 +127,7 @@ void markChangedPatches(const QuadMesh& m, const std::vector<char>& now, const s
 bool smoothOnlyAround(QuadrangulationResult& c, const QuadrangulationResult& from, std::vector<char> region,
                       SmoothingOptions& smoothing) {
   if (c.mesh.quads != from.mesh.quads || c.mesh.quadPatch != from.mesh.quadPatch ||
-      region.size() != c.mesh.positions.size())
+      c.mesh.positions.size() != from.mesh.positions.size() || region.size() != c.mesh.positions.size())
     return false;
   for (int ring = 0; ring < kRefoldRings; ++ring) {
     std::vector<char> grown = region;
