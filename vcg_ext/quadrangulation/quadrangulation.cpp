@@ -157,7 +157,7 @@ bool smoothOnlyAround(QuadrangulationResult& c, const QuadrangulationResult& fro
 /// (0) and (1) change the mesh only near the folds: they start from the samples within
 /// kRefoldRings rings of the folds' corners (and of the patches sampled again), keep r's
 /// smoothed positions elsewhere and smooth only there (SmoothingOptions::frozen), so a try
-/// costs in proportion to the folds (the dragon: 0.3–0.6 s instead of 2–2.5 s for the whole
+/// costs in proportion to the folds (the dragon: 0.3–0.9 s instead of 2–2.5 s for the whole
 /// mesh). Where sampling again changed the mesh's connectivity (it should not: the counts are
 /// the same), the whole mesh is smoothed.
 template <class Accept>
