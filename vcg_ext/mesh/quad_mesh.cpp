@@ -139,4 +139,14 @@ std::string quadMeshToObj(const QuadMesh& mesh) {
   return out.str();
 }
 
+void growAcrossQuads(const QuadMesh& mesh, std::vector<char>& marked, int rings) {
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<char> grown = marked;
+    for (const auto& q : mesh.quads)
+      if (marked[q[0]] || marked[q[1]] || marked[q[2]] || marked[q[3]])
+        for (int v : q) grown[v] = 1;
+    marked.swap(grown);
+  }
+}
+
 }  // namespace fcql

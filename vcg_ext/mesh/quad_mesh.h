@@ -50,6 +50,10 @@ struct SurfaceTopology {
 };
 SurfaceTopology triangleMeshTopology(int numVertices, const std::vector<std::array<int, 3>>& triangles);
 
+/// Marks, `rings` times over, every vertex of each quad that has a marked vertex: the vertices
+/// within `rings` quads of those marked (`marked`: one flag per vertex).
+void growAcrossQuads(const QuadMesh& mesh, std::vector<char>& marked, int rings);
+
 /// OBJ text with `v` and `f a b c d` lines only.
 std::string quadMeshToObj(const QuadMesh& mesh);
 

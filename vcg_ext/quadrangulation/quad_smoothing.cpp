@@ -684,13 +684,7 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
   // its rim (a border there) holds only frozen vertices.
   std::vector<char> near(nv, 0);
   for (int v = 0; v < nv; ++v) near[v] = !options.frozen[v];
-  {
-    std::vector<char> grown = near;
-    for (const auto& q : quads.quads)
-      if (near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]])
-        for (int v : q) grown[v] = 1;
-    near.swap(grown);
-  }
+  growAcrossQuads(quads, near, 1);
   QuadMesh part;
   SmoothingOptions partOptions = options;
   partOptions.frozen.clear();

@@ -129,13 +129,7 @@ bool smoothOnlyAround(QuadrangulationResult& c, const QuadrangulationResult& fro
   if (c.mesh.quads != from.mesh.quads || c.mesh.quadPatch != from.mesh.quadPatch ||
       c.mesh.positions.size() != from.mesh.positions.size() || region.size() != c.mesh.positions.size())
     return false;
-  for (int ring = 0; ring < kRefoldRings; ++ring) {
-    std::vector<char> grown = region;
-    for (const auto& q : c.mesh.quads)
-      if (region[q[0]] || region[q[1]] || region[q[2]] || region[q[3]])
-        for (int v : q) grown[v] = 1;
-    region.swap(grown);
-  }
+  growAcrossQuads(c.mesh, region, kRefoldRings);
   if (std::find(region.begin(), region.end(), 0) == region.end()) return false;
   smoothing.frozen.assign(region.size(), 0);
   for (std::size_t v = 0; v < region.size(); ++v)
@@ -332,26 +326,27 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
                                         const QuadrangulationResult* previous = nullptr) {
   QuadrangulationResult r = cache.get(layout, options);
   const bool field = !options.fieldDirections.empty();
+  const bool marked = field && meanValuePatches;  // some patches sampled otherwise: not shared
   const std::pair<double, bool> sampledKey{options.targetEdgeLength, field};
-  if (auto it = cache.sampled.find(sampledKey); it != cache.sampled.end() && !(field && meanValuePatches)) {
+  if (auto it = cache.sampled.find(sampledKey); it != cache.sampled.end() && !marked) {
     r.mesh = it->second.first;
     r.dissolvedVertices = it->second.second;
   } else {
     r.mesh = samplePatches(layout, r.graph, r.lengths, field ? &options.fieldDirections : nullptr,
-                           field ? meanValuePatches : nullptr);
+                           marked ? meanValuePatches : nullptr);
     r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
-    if (!(field && meanValuePatches)) cache.sampled.emplace(sampledKey, std::make_pair(r.mesh, r.dissolvedVertices));
+    if (!marked) cache.sampled.emplace(sampledKey, std::make_pair(r.mesh, r.dissolvedVertices));
   }
-  if (field && meanValuePatches) {
+  if (marked) {
     r.meanValuePatches = *meanValuePatches;
     r.boundMeanValuePatches = int(std::count(meanValuePatches->begin(), meanValuePatches->end(), kMeanValuePatch));
     r.boundArcLengthPatches = int(std::count(meanValuePatches->begin(), meanValuePatches->end(), kArcLengthSides));
   }
   r.sampledPositions = r.mesh.positions;
   r.fieldGridKept = field && options.keepFieldGrid;
-  SmoothingOptions smoothing = smoothingFor(layout, options, field ? meanValuePatches : nullptr);
+  SmoothingOptions smoothing = smoothingFor(layout, options, marked ? meanValuePatches : nullptr);
   bool local = false;
-  if (previous && field && meanValuePatches && previous->mesh.numVertices() == r.mesh.numVertices()) {
+  if (previous && marked) {
     std::vector<char> region(r.mesh.numVertices(), 0);
     markChangedPatches(r.mesh, *meanValuePatches, previous->meanValuePatches, region);
     local = smoothOnlyAround(r, *previous, region, smoothing);
