@@ -280,6 +280,42 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## The bound's patch-wise fallbacks start from the field-aligned grid; one whole pass less on the dragon (issue 21, nineteenth session, 2026-12-06)
+
+Measured on the same machine, bench parameters; the table above is the run after it.
+
+- **What the dragon's quad stage did** (instrumented): the field-aligned pass (smoothed only
+  around its poor quads) missed the distance bound at 1.10 times it; the same grid smoothed
+  everywhere, a whole pass of 4.5–5 s (smoothing 0.8–1.4 s, untangling 1.0–1.3 s, fold repair
+  2.1–2.7 s), came out farther, at 1.27 times the bound; the patch-wise fallbacks (91 patches'
+  sides by arc length) then started from that farther grid and met the bound.
+- **Now** (`quadrangulateWith` in `quadrangulation/quadrangulation.cpp`): the patch-wise
+  fallbacks start from the field-aligned grid; only if they miss is the grid smoothed everywhere,
+  and its own fallbacks run only if it is closer to the surface (they are given up as soon as
+  they touch more than half the patches when the grid smoothed everywhere is still to come).
+  The refinements still start from the grid smoothed everywhere, which meets the bound with
+  larger quads (camelhead: 22.4K quads after three refinements; starting them from the
+  field-aligned grid gave 28.8K, tried and not kept). A fold round also no longer tries the
+  resampled patches when the plain smoothing leaves no fold (it cannot fold fewer; same output).
+- **Dragon** (2% of the diagonal): misaligned quads 36.7 → 33.5%, per face as the paper counts
+  14.3 → 13.5%, mean scaled Jacobian 0.882 → 0.893 (least 0.019 → 0.021, no fold), Hausdorff
+  0.97% as before, 94 patches' sides by arc length instead of 91. Its quad stage: one whole pass
+  less, but more fold rounds (four instead of two, each 1–3.5 s); alternating with the build before, on a slow hour
+  of the machine, 28.5 and 27.2 s before, 26.3 and 26.5 s after (whole run 51.4 and 48.6 s, then
+  47.3 and 50.4 s). At 1% (`--scale 0.01`) it is not needed: the field-aligned pass meets the
+  bound there.
+- **The other eleven meshes** give the same quads, byte for byte (rockerarm, kitten, camelhead
+  compared; all figures in the table the same). Alternating quad-stage times, before / after:
+  rockerarm 2.86, 3.19 / 3.00, 3.35 s (the fallbacks from the field-aligned grid run and miss
+  first: +5%); kitten 1.00, 0.91 / 0.92, 1.04 s; camelhead 5.49, 5.26 / 3.01, 3.98 s (its grid
+  smoothed everywhere is farther than the field-aligned one, so its patch-wise fallbacks, which
+  missed, no longer run).
+- The table above ran on a slower hour still (the dragon's quad stage 29.3 s, whole run 57.7 s;
+  deckel's whole run 2.2 s against 1.6 s in the last session's table, with the same quads): its
+  times compare with nothing but each other.
+- Still open: the dragon's quad stage (the target is 3 s) and its 33.5% misaligned quads (the
+  target 25%).
+
 ## The quad stage's fold rounds and bound fallbacks smooth only where they change the mesh; no fold left on the dragon at 2% (issue 21, eighteenth session, 2026-12-06)
 
 Measured on the same machine, bench parameters; the table above is the run after it.
