@@ -142,3 +142,33 @@ TEST(FieldAlignedMap, SolverKeepsFixedValuesAndSlidingPointsOnTheirSide) {
   flipped[4] = Vec2(0.5, -0.5);
   EXPECT_GT(foldedTriangles(pb.triangles, flipped, 0), 0);
 }
+
+TEST(FieldAlignedMap, SampledGridsGiveTheSameMeshAndAreReusedOnlyForTheSameBoundary) {
+  const PatchLayout layout = trapezoid(40, 20);
+  const PatchGraph graph = buildPatchGraph(layout);
+  const SideLengths lengths = solveSideLengths(graph, 0.1, 10), finer = solveSideLengths(graph, 0.05, 10);
+  ASSERT_TRUE(lengths.inconsistentPatches.empty());
+  ASSERT_TRUE(finer.inconsistentPatches.empty());
+  const std::vector<Vec3> field(layout.triangles.size(), Vec3(1, 0, 0));
+  const std::vector<char> meanValue{kMeanValuePatch};
+  const QuadMesh aligned = samplePatches(layout, graph, lengths, &field);
+  const QuadMesh plain = samplePatches(layout, graph, lengths, &field, &meanValue);
+  const QuadMesh alignedFiner = samplePatches(layout, graph, finer, &field);
+  ASSERT_NE(aligned.positions, plain.positions);
+  SampledGrids grids;
+  auto kept = [&] { return grids.byPatch.count(0) ? grids.byPatch.at(0).size() : std::size_t(0); };
+  EXPECT_EQ(samplePatches(layout, graph, lengths, &field, nullptr, &grids).positions, aligned.positions);
+  EXPECT_EQ(kept(), 1u);
+  // Mapped otherwise (mean-value coordinates): a grid of its own, not the aligned one.
+  EXPECT_EQ(samplePatches(layout, graph, lengths, &field, &meanValue, &grids).positions, plain.positions);
+  EXPECT_EQ(kept(), 2u);
+  // The aligned map again: taken from the grids, the same to the last bit.
+  const QuadMesh again = samplePatches(layout, graph, lengths, &field, nullptr, &grids);
+  EXPECT_EQ(again.positions, aligned.positions);
+  EXPECT_EQ(again.quads, aligned.quads);
+  EXPECT_EQ(again.alignedPatches, aligned.alignedPatches);
+  EXPECT_EQ(kept(), 2u);
+  // Another size: another rectangle, mapped anew.
+  EXPECT_EQ(samplePatches(layout, graph, finer, &field, nullptr, &grids).positions, alignedFiner.positions);
+  EXPECT_EQ(kept(), 3u);
+}

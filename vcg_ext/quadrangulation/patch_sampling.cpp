@@ -101,7 +101,8 @@ std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p) {
 }
 
 QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths,
-                       const std::vector<Vec3>* faceDirections, const std::vector<char>* meanValuePatches) {
+                       const std::vector<Vec3>* faceDirections, const std::vector<char>* meanValuePatches,
+                       SampledGrids* grids) {
   if (!lengths.inconsistentPatches.empty())
     throw std::runtime_error(std::to_string(lengths.inconsistentPatches.size()) +
                              " patches have opposite sides of different lengths (zero chains)");
@@ -383,38 +384,60 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       }
       const bool keepMeanValue = meanValuePatches && ps.layoutPatch < int(meanValuePatches->size()) &&
                                  (*meanValuePatches)[ps.layoutPatch] == kMeanValuePatch;
-      auto map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
-                                            [&](int k) { return loopUv[k]; }, faceDirections && !keepMeanValue ? &guide : nullptr);
-      std::vector<Vec3> inner = innerGrid(*map, W, H);
-      GuidedMap kind = map->guided();
-      if (kind == GuidedMap::Aligned || kind == GuidedMap::Blended) {
-        // A grid the aligned map folds in space (a quad turned against the surface at a
-        // corner) where the mean-value map's does not fold as often: the mean-value grid.
-        auto position = [&](const std::vector<Vec3>& in, int i, int j) -> Vec3 {
-          if (i > 0 && j > 0 && i < W && j < H) return in[(j - 1) * (W - 1) + (i - 1)];
-          return q.positions[at(i, j)];
-        };
-        auto foldedQuads = [&](const std::vector<Vec3>& in) {
-          int n = 0;
-          for (int j = 0; j < H; ++j)
-            for (int i = 0; i < W; ++i) {
-              const std::array<Vec3, 4> c{position(in, i, j), position(in, i + 1, j), position(in, i + 1, j + 1),
-                                          position(in, i, j + 1)};
-              const Vec3 normal = (c[2] - c[0]).cross(c[3] - c[1]);
-              bool folded = false;
-              for (int k = 0; k < 4 && !folded; ++k)
-                folded = !((c[(k + 1) % 4] - c[k]).cross(c[(k + 3) % 4] - c[k]).dot(normal) > 0);
-              n += folded;
-            }
-          return n;
-        };
-        const int alignedFolds = foldedQuads(inner);
-        if (alignedFolds > 0) {
-          auto plain = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
-                                                  [&](int k) { return loopUv[k]; });
-          std::vector<Vec3> plainInner = innerGrid(*plain, W, H);
-          if (foldedQuads(plainInner) < alignedFolds)
-            map = std::move(plain), inner = std::move(plainInner), kind = GuidedMap::MeanValue;
+      const bool guided = faceDirections && !keepMeanValue;
+      const SampledGrids::Grid* before = nullptr;
+      if (grids)
+        for (const SampledGrids::Grid& g : grids->byPatch[ps.layoutPatch]) {
+          if (g.W == W && g.H == H && g.guided == guided && g.boundaryUv == loopUv) {
+            before = &g;
+            break;
+          }
+        }
+      std::vector<Vec3> inner;
+      GuidedMap kind;
+      int outside;
+      if (before) {
+        inner = before->inner, kind = before->kind, outside = before->outsidePoints;
+      } else {
+        auto map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
+                                              [&](int k) { return loopUv[k]; }, guided ? &guide : nullptr);
+        inner = innerGrid(*map, W, H);
+        kind = map->guided();
+        if (kind == GuidedMap::Aligned || kind == GuidedMap::Blended) {
+          // A grid the aligned map folds in space (a quad turned against the surface at a
+          // corner) where the mean-value map's does not fold as often: the mean-value grid.
+          auto position = [&](const std::vector<Vec3>& in, int i, int j) -> Vec3 {
+            if (i > 0 && j > 0 && i < W && j < H) return in[(j - 1) * (W - 1) + (i - 1)];
+            return q.positions[at(i, j)];
+          };
+          auto foldedQuads = [&](const std::vector<Vec3>& in) {
+            int n = 0;
+            for (int j = 0; j < H; ++j)
+              for (int i = 0; i < W; ++i) {
+                const std::array<Vec3, 4> c{position(in, i, j), position(in, i + 1, j), position(in, i + 1, j + 1),
+                                            position(in, i, j + 1)};
+                const Vec3 normal = (c[2] - c[0]).cross(c[3] - c[1]);
+                bool folded = false;
+                for (int k = 0; k < 4 && !folded; ++k)
+                  folded = !((c[(k + 1) % 4] - c[k]).cross(c[(k + 3) % 4] - c[k]).dot(normal) > 0);
+                n += folded;
+              }
+            return n;
+          };
+          const int alignedFolds = foldedQuads(inner);
+          if (alignedFolds > 0) {
+            auto plain = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
+                                                    [&](int k) { return loopUv[k]; });
+            std::vector<Vec3> plainInner = innerGrid(*plain, W, H);
+            if (foldedQuads(plainInner) < alignedFolds)
+              map = std::move(plain), inner = std::move(plainInner), kind = GuidedMap::MeanValue;
+          }
+        }
+        outside = map->outsidePoints();
+        if (grids) {
+          std::vector<SampledGrids::Grid>& kept = grids->byPatch[ps.layoutPatch];
+          if (kept.size() >= SampledGrids::kPerPatch) kept.erase(kept.begin());
+          kept.push_back({W, H, guided, loopUv, inner, kind, outside});
         }
       }
       for (int j = 1; j < H; ++j)
@@ -427,7 +450,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         q.blendedPatches += kind == GuidedMap::Blended;
         q.meanValuePatches += kind == GuidedMap::MeanValue || kind == GuidedMap::None;
       }
-      q.outsidePoints += map->outsidePoints();
+      q.outsidePoints += outside;
     } else if (ps.chart >= 0) {
       // A part of a split patch: bilinear in its quad of the layout patch's polygon chart.
       auto& map = chartMaps[ps.chart];

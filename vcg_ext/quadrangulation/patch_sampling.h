@@ -10,7 +10,11 @@
 #pragma once
 
 #include "mesh/quad_mesh.h"
+#include "quadrangulation/patch_map.h"
 #include "quadrangulation/side_lengths.h"
+
+#include <unordered_map>
+#include <vector>
 
 namespace fcql {
 
@@ -30,8 +34,30 @@ std::vector<Vec2> unitSquareBoundary(const PatchLayout& layout, int p);
 /// in `meanValuePatches` (per layout patch) get arc length on their sides: kArcLengthSides
 /// keeps the field-aligned map inside, kMeanValuePatch mean-value coordinates.
 constexpr char kFieldPatch = 0, kMeanValuePatch = 1, kArcLengthSides = 2;
+
+/// The grids of whole layout patches that samplePatches mapped before, for its later calls on
+/// the same layout (the quad stage's passes at one size sample most patches alike: the fold
+/// rounds and the distance fallbacks change a few). A patch mapped the same way, onto a
+/// rectangle of the same size, with its boundary exactly where it was (to the last bit: the
+/// quads downstream are that sensitive), takes its grid from here instead of being mapped
+/// again: the same grid, faster.
+struct SampledGrids {
+  /// How many grids are kept per layout patch (the oldest go first).
+  static constexpr std::size_t kPerPatch = 4;
+  struct Grid {
+    int W = 0, H = 0;
+    bool guided = false;           ///< mapped field-aligned (else with mean-value coordinates)
+    std::vector<Vec2> boundaryUv;  ///< where its boundary loop went
+    std::vector<Vec3> inner;       ///< its inner grid points, row by row
+    GuidedMap kind = GuidedMap::None;
+    int outsidePoints = 0;
+  };
+  std::unordered_map<int, std::vector<Grid>> byPatch;
+};
+
+/// `grids`, if given, is read and extended (SampledGrids).
 QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const SideLengths& lengths,
                        const std::vector<Vec3>* faceDirections = nullptr,
-                       const std::vector<char>* meanValuePatches = nullptr);
+                       const std::vector<char>* meanValuePatches = nullptr, SampledGrids* grids = nullptr);
 
 }  // namespace fcql

@@ -156,7 +156,7 @@ bool smoothOnlyAround(QuadrangulationResult& c, const QuadrangulationResult& fro
 /// the same), the whole mesh is smoothed.
 template <class Accept>
 bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const QuadrangulationOptions& options,
-                 Accept&& accept) {
+                 SampledGrids& grids, Accept&& accept) {
   std::vector<int> folded;
   int before = foldedQuads(r.mesh, &folded);
   if (options.fieldDirections.empty() || before == 0) return false;
@@ -181,8 +181,8 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
         if (r.mesh.quadPatch[q] >= 0 && std::any_of(quad.begin(), quad.end(), [&](int v) { return region[v] != 0; }))
           meanValue[r.mesh.quadPatch[q]] = kMeanValuePatch;
       }
-      c.mesh = k == 1 ? samplePatches(layout, r.graph, r.lengths, &options.fieldDirections, &meanValue)
-                      : samplePatches(layout, r.graph, r.lengths);
+      c.mesh = k == 1 ? samplePatches(layout, r.graph, r.lengths, &options.fieldDirections, &meanValue, &grids)
+                      : samplePatches(layout, r.graph, r.lengths, nullptr, nullptr, &grids);
       c.meanValuePatches = k == 1 ? meanValue : std::vector<char>();
       c.boundMeanValuePatches = k == 1 ? r.boundMeanValuePatches : 0;
       c.boundArcLengthPatches = k == 1 ? r.boundArcLengthPatches : 0;
@@ -300,6 +300,8 @@ struct PassCache {
   /// two-valent vertices dissolved) with no patch marked, and how many were dissolved. The
   /// passes smoothed only around the poor quads and everywhere sample the same.
   std::map<std::pair<double, bool>, std::pair<QuadMesh, int>> sampled;
+  /// The patches' grids mapped so far, by all passes.
+  SampledGrids grids;
 
   QuadrangulationResult get(const PatchLayout& layout, const QuadrangulationOptions& options) {
     const double size = options.targetEdgeLength;
@@ -334,7 +336,7 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
     r.dissolvedVertices = it->second.second;
   } else {
     r.mesh = samplePatches(layout, r.graph, r.lengths, field ? &options.fieldDirections : nullptr,
-                           marked ? meanValuePatches : nullptr);
+                           marked ? meanValuePatches : nullptr, &cache.grids);
     r.dissolvedVertices = dissolveTwoValentVertices(r.mesh);
     if (!marked) cache.sampled.emplace(sampledKey, std::make_pair(r.mesh, r.dissolvedVertices));
   }
@@ -387,7 +389,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   const SurfaceTopology topology = triangleMeshTopology(int(layout.positions.size()), layout.triangles);
   if (options.maxDeviation <= 0) {
     QuadrangulationResult r = quadrangulateOnce(layout, options, topology, cache);
-    reduceFolds(r, layout, options, [](QuadrangulationResult&) { return true; });
+    reduceFolds(r, layout, options, cache.grids, [](QuadrangulationResult&) { return true; });
     return r;
   }
   // The distance to the surface, measured on the layout's triangles (the input, cut), both
@@ -601,7 +603,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
     // Folds left by the field-aligned pass the refinements kept: other ways to sample it,
     // kept if they fold fewer and stay within the bound (or no farther than this one).
     const double bound = std::max(limit, r.deviationBound);
-    reduceFolds(r, layout, active, [&](QuadrangulationResult& c) {
+    reduceFolds(r, layout, active, cache.grids, [&](QuadrangulationResult& c) {
       measure(c);
       return c.deviationBound <= bound;
     });
