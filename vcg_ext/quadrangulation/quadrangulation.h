@@ -82,9 +82,9 @@ struct QuadrangulationOptions {
   /// whose scaled Jacobian is below 0.5 (SmoothingOptions::keepGridAbove), keeping the
   /// field-aligned grid the maps sampled elsewhere (smoothing it everywhere turned it away from
   /// the field: bunny 4.6% of the quads more than π/16 off it unsmoothed, 9.4% smoothed). If
-  /// that mesh misses maxDeviation, the stage smooths everywhere too; its patch-wise fallbacks
-  /// start from whichever of the two is closer to the surface, its refinements from the mesh
-  /// smoothed everywhere.
+  /// that mesh misses maxDeviation, the patch-wise fallbacks start from it; if they miss too,
+  /// the stage smooths everywhere, tries them from there if that mesh is closer to the surface,
+  /// and refines from there.
   bool keepFieldGrid = true;
   /// Largest Hausdorff distance to the surface allowed, relative to the bounding-box diagonal
   /// (0: no check). Where the mesh may deviate more (measureDeviation's upper bound: curved
