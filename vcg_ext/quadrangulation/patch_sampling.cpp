@@ -7,7 +7,9 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -66,6 +68,52 @@ std::vector<Vec3> innerGrid(const PatchMap& map, int W, int H) {
   for (int j = 1; j < H; ++j)
     for (int i = 1; i < W; ++i) out.push_back(map.pointAt(Vec2(i, j)));
   return out;
+}
+
+/// The quads of a W × H grid folded in space (a corner turned against the quad's own normal),
+/// given its inner points row by row and `side(i, j)`, the points on its sides.
+int foldedGridQuads(const std::vector<Vec3>& inner, int W, int H, const std::function<Vec3(int, int)>& side) {
+  auto position = [&](int i, int j) -> Vec3 {
+    if (i > 0 && j > 0 && i < W && j < H) return inner[(j - 1) * (W - 1) + (i - 1)];
+    return side(i, j);
+  };
+  int n = 0;
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) {
+      const std::array<Vec3, 4> c{position(i, j), position(i + 1, j), position(i + 1, j + 1), position(i, j + 1)};
+      const Vec3 normal = (c[2] - c[0]).cross(c[3] - c[1]);
+      bool folded = false;
+      for (int k = 0; k < 4 && !folded; ++k) folded = !((c[(k + 1) % 4] - c[k]).cross(c[(k + 3) % 4] - c[k]).dot(normal) > 0);
+      n += folded;
+    }
+  return n;
+}
+
+/// Layout patch `patch` (its `triangles`) mapped onto its W × H rectangle, its boundary loop
+/// at `loopUv`: field-aligned with a `guide`, else with mean-value coordinates. A grid the
+/// aligned (or blended) map folds in space (a quad turned against the surface at a corner)
+/// where the mean-value map's folds fewer quads gives way to that one. `side(i, j)`: the
+/// points sampled on the rectangle's sides.
+SampledGrids::Grid mapPatchGrid(const PatchLayout& layout, int patch, const std::vector<int>& triangles,
+                                const std::unordered_map<std::uint64_t, int>& halfEdge, const std::vector<Vec2>& loopUv,
+                                int W, int H, const PatchGuide* guide, const std::function<Vec3(int, int)>& side) {
+  SampledGrids::Grid grid;
+  grid.W = W, grid.H = H, grid.guided = guide != nullptr, grid.boundaryUv = loopUv;
+  auto boundary = [&](int k) { return loopUv[k]; };
+  auto map = std::make_unique<PatchMap>(layout, patch, triangles, halfEdge, boundary, guide);
+  grid.inner = innerGrid(*map, W, H);
+  grid.kind = map->guided();
+  if (grid.kind == GuidedMap::Aligned || grid.kind == GuidedMap::Blended) {
+    const int alignedFolds = foldedGridQuads(grid.inner, W, H, side);
+    if (alignedFolds > 0) {
+      auto plain = std::make_unique<PatchMap>(layout, patch, triangles, halfEdge, boundary);
+      std::vector<Vec3> plainInner = innerGrid(*plain, W, H);
+      if (foldedGridQuads(plainInner, W, H, side) < alignedFolds)
+        map = std::move(plain), grid.inner = std::move(plainInner), grid.kind = GuidedMap::MeanValue;
+    }
+  }
+  grid.outsidePoints = map->outsidePoints();
+  return grid;
 }
 
 }  // namespace
@@ -393,53 +441,21 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
             break;
           }
         }
-      std::vector<Vec3> inner;
-      GuidedMap kind;
-      int outside;
-      if (before) {
-        inner = before->inner, kind = before->kind, outside = before->outsidePoints;
-      } else {
-        auto map = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
-                                              [&](int k) { return loopUv[k]; }, guided ? &guide : nullptr);
-        inner = innerGrid(*map, W, H);
-        kind = map->guided();
-        if (kind == GuidedMap::Aligned || kind == GuidedMap::Blended) {
-          // A grid the aligned map folds in space (a quad turned against the surface at a
-          // corner) where the mean-value map's does not fold as often: the mean-value grid.
-          auto position = [&](const std::vector<Vec3>& in, int i, int j) -> Vec3 {
-            if (i > 0 && j > 0 && i < W && j < H) return in[(j - 1) * (W - 1) + (i - 1)];
-            return q.positions[at(i, j)];
-          };
-          auto foldedQuads = [&](const std::vector<Vec3>& in) {
-            int n = 0;
-            for (int j = 0; j < H; ++j)
-              for (int i = 0; i < W; ++i) {
-                const std::array<Vec3, 4> c{position(in, i, j), position(in, i + 1, j), position(in, i + 1, j + 1),
-                                            position(in, i, j + 1)};
-                const Vec3 normal = (c[2] - c[0]).cross(c[3] - c[1]);
-                bool folded = false;
-                for (int k = 0; k < 4 && !folded; ++k)
-                  folded = !((c[(k + 1) % 4] - c[k]).cross(c[(k + 3) % 4] - c[k]).dot(normal) > 0);
-                n += folded;
-              }
-            return n;
-          };
-          const int alignedFolds = foldedQuads(inner);
-          if (alignedFolds > 0) {
-            auto plain = std::make_unique<PatchMap>(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge,
-                                                    [&](int k) { return loopUv[k]; });
-            std::vector<Vec3> plainInner = innerGrid(*plain, W, H);
-            if (foldedQuads(plainInner) < alignedFolds)
-              map = std::move(plain), inner = std::move(plainInner), kind = GuidedMap::MeanValue;
-          }
-        }
-        outside = map->outsidePoints();
+      SampledGrids::Grid mapped;
+      if (!before) {
+        mapped = mapPatchGrid(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge, loopUv, W, H,
+                              guided ? &guide : nullptr, [&](int i, int j) { return q.positions[at(i, j)]; });
         if (grids) {
           std::vector<SampledGrids::Grid>& kept = grids->byPatch[ps.layoutPatch];
           if (kept.size() >= SampledGrids::kPerPatch) kept.erase(kept.begin());
-          kept.push_back({W, H, guided, loopUv, inner, kind, outside});
+          kept.push_back(std::move(mapped));
+          before = &kept.back();
+        } else {
+          before = &mapped;
         }
       }
+      const std::vector<Vec3>& inner = before->inner;
+      const GuidedMap kind = before->kind;
       for (int j = 1; j < H; ++j)
         for (int i = 1; i < W; ++i) {
           q.positions.push_back(inner[(j - 1) * (W - 1) + (i - 1)]);
@@ -450,7 +466,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         q.blendedPatches += kind == GuidedMap::Blended;
         q.meanValuePatches += kind == GuidedMap::MeanValue || kind == GuidedMap::None;
       }
-      q.outsidePoints += outside;
+      q.outsidePoints += before->outsidePoints;
     } else if (ps.chart >= 0) {
       // A part of a split patch: bilinear in its quad of the layout patch's polygon chart.
       auto& map = chartMaps[ps.chart];
