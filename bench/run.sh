@@ -280,6 +280,52 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
+## The fold rounds' two ways side by side; what was tried against the dragon's folds at 1% (issue 21, twentieth session, 2026-12-07)
+
+Measured on the same machine (2 cores, a shared virtual machine whose speed varied by up to
+1.3× between consecutive runs this session), bench parameters; the table above is the run after it.
+
+- **Where the dragon's quad stage goes** (2% of the diagonal, instrumented, one run): the side
+  lengths 4.9–5.9 s; the first sampling 1.0–1.4 s; the first pass's smoothing 5.6–6.0 s
+  (iterations 0.6–0.7 s, the relaxation towards the field 0.4–0.5 s, untangling 1.3 s, fold
+  repair 1.9–2.2 s, the repair with corners released from feature lines 0.9–1.05 s); the
+  patch-wise fallback for the distance bound 2.2–2.5 s; four fold rounds 10.6 s (each round's
+  plain smoothing 0.6–1.4 s, then its patches sampled again 1.7–3.0 s).
+- **The fold rounds' two ways run side by side** (`reduceFolds` in
+  `quadrangulation/quadrangulation.cpp`, with two threads or more): both are mostly sequential
+  and neither reads what the other writes. The four rounds 10.6 → 7.4 s; the whole quad stage,
+  five runs of each build alternating, 23.8 / 24.6 / 19.9 / 26.2 / 21.6 s before (mean 23.2) and
+  25.1 / 21.4 / 21.0 / 23.0 / 18.8 s after (mean 21.9): the two threads also compete with the
+  smoothing's and the distance measure's own. The same quads, byte for byte, on all twelve meshes
+  (and the dragon at 1%). With `--threads 1` the rounds run one way after the other as before.
+- **The fold repair's rings** (`repairFolds`, counted over the dragon's whole run): the parts
+  kept / tried and the time at 1, 2, 4 and 8 rings were 32/84 (1.1 s), 4/61 (1.2 s), 5/62
+  (2.1 s) and 1/60 (3.6 s). Dropping the 8-ring level was tried: the first fold round then
+  helped no more, 12 folds were left and the stage without the field was kept. Not kept. No other
+  shared mesh calls the fold repair at 2%.
+- **The dragon's 5 folds at 1%** (`--scale 0.01`) lie in crushed quads, 0.004–0.04 of the target
+  edge across: the layout's patches are narrower than its quads (the median patch 0.16 of the 2%
+  target edge wide, measured as twice its area over its perimeter; 1543 of its 5852 patches
+  narrower than a tenth of it; patch 5037 is two triangles, 0.12 × 0.35 where a quad edge is
+  1.45), and a patch gets at least one quad across. Tried, and none left fewer folds: (a) after
+  the descent of the fold repair fails on a part, its vertices placed by the harmonic map of a
+  plane (uniform weights, Tutte's embedding), the vertices around them held; (b) the same on a disk
+  of 3, 5 and 8 median edges around each fold left; (c) the descent with its area term measured
+  against the median edge instead of the quads' own, so that crushed quads are pushed apart.
+  The crushed strips run on past any such region: its held border vertices lie within a hundredth
+  of an edge of each other, and the planar map folded more quads than it unfolded (2 → 9, 3 →
+  14 in the plane, before going back onto the surface). Not kept; the remedy belongs to the
+  layout (no patch narrower than a fraction of the quads) or to quads that may cross such a sliver.
+- `samplePatches`: mapping a whole patch onto its rectangle (with the fold check against the
+  mean-value map) is a function of its own, `mapPatchGrid`, returning the grid kept for later
+  passes. The same quads.
+- A build with ThreadSanitizer ran the dragon (2%, four fold rounds side by side): no report,
+  the same figures.
+- The table above ran on a faster hour than the last session's (the dragon's quad stage 21.5 s,
+  whole run 41.2 s, against 29.3 and 57.7 s; deckel's whole run 1.3 s against 2.2 s, with the
+  same quads): every quality figure in it is the same as before; its times compare with
+  nothing but each other.
+
 ## The bound's patch-wise fallbacks start from the field-aligned grid; one whole pass less on the dragon (issue 21, nineteenth session, 2026-12-06)
 
 Measured on the same machine, bench parameters; the table above is the run after it.
