@@ -156,8 +156,9 @@ bool smoothOnlyAround(QuadrangulationResult& c, const QuadrangulationResult& fro
 /// costs in proportion to the folds (the dragon: 0.3–0.9 s instead of 2–2.5 s for the whole
 /// mesh). Where sampling again changed the mesh's connectivity (it should not: the counts are
 /// the same), the whole mesh is smoothed. With two threads or more (SmoothingOptions::threads),
-/// (0) and (1) run side by side, (1) then also when (0) leaves no fold; the result is the same
-/// (the dragon's four rounds: 10.6 s → 7.4 s). `accept` must then be safe to call from two threads.
+/// (0) and (1) run side by side, (1) then also when (0) leaves no fold (its result, or its
+/// error, then dropped); the result is the same (the dragon's four rounds: 10.6 s → 7.4 s).
+/// `accept` must then be safe to call from two threads.
 template <class Accept>
 bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const QuadrangulationOptions& options,
                  SampledGrids& grids, Accept&& accept) {
@@ -228,7 +229,10 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
       // (untangling, fold repair, sampling), and neither reads what the other writes.
       auto second = std::async(std::launch::async, [&] { return attempt(1); });
       best = attempt(0);
-      resampled = second.get();
+      // (1) counts only where (0) leaves folds, as when they run one after the other: only
+      // then does its result, or its error, come out (waited for either way).
+      if (!best || best->second > 0) resampled = second.get();
+      else second.wait();
     } else {
       best = attempt(0);
       if (!best || best->second > 0) resampled = attempt(1);  // none can fold fewer than none
