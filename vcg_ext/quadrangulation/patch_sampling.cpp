@@ -433,29 +433,27 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
       const bool keepMeanValue = meanValuePatches && ps.layoutPatch < int(meanValuePatches->size()) &&
                                  (*meanValuePatches)[ps.layoutPatch] == kMeanValuePatch;
       const bool guided = faceDirections && !keepMeanValue;
-      const SampledGrids::Grid* before = nullptr;
-      if (grids)
-        for (const SampledGrids::Grid& g : grids->byPatch[ps.layoutPatch]) {
-          if (g.W == W && g.H == H && g.guided == guided && g.boundaryUv == loopUv) {
-            before = &g;
-            break;
-          }
-        }
+      // The patch's grid: one mapped by an earlier call the same way with the same boundary,
+      // else mapped now (and kept for later calls).
+      std::vector<SampledGrids::Grid>* kept = grids ? &grids->byPatch[ps.layoutPatch] : nullptr;
+      const SampledGrids::Grid* grid = nullptr;
+      for (std::size_t g = 0; kept && g < kept->size() && !grid; ++g) {
+        const SampledGrids::Grid& old = (*kept)[g];
+        if (old.W == W && old.H == H && old.guided == guided && old.boundaryUv == loopUv) grid = &old;
+      }
       SampledGrids::Grid mapped;
-      if (!before) {
+      if (!grid) {
         mapped = mapPatchGrid(layout, ps.layoutPatch, trianglesOf[ps.layoutPatch], halfEdge, loopUv, W, H,
                               guided ? &guide : nullptr, [&](int i, int j) { return q.positions[at(i, j)]; });
-        if (grids) {
-          std::vector<SampledGrids::Grid>& kept = grids->byPatch[ps.layoutPatch];
-          if (kept.size() >= SampledGrids::kPerPatch) kept.erase(kept.begin());
-          kept.push_back(std::move(mapped));
-          before = &kept.back();
-        } else {
-          before = &mapped;
+        grid = &mapped;
+        if (kept) {
+          if (kept->size() >= SampledGrids::kPerPatch) kept->erase(kept->begin());
+          kept->push_back(std::move(mapped));
+          grid = &kept->back();
         }
       }
-      const std::vector<Vec3>& inner = before->inner;
-      const GuidedMap kind = before->kind;
+      const std::vector<Vec3>& inner = grid->inner;
+      const GuidedMap kind = grid->kind;
       for (int j = 1; j < H; ++j)
         for (int i = 1; i < W; ++i) {
           q.positions.push_back(inner[(j - 1) * (W - 1) + (i - 1)]);
@@ -466,7 +464,7 @@ QuadMesh samplePatches(const PatchLayout& layout, const PatchGraph& graph, const
         q.blendedPatches += kind == GuidedMap::Blended;
         q.meanValuePatches += kind == GuidedMap::MeanValue || kind == GuidedMap::None;
       }
-      q.outsidePoints += before->outsidePoints;
+      q.outsidePoints += grid->outsidePoints;
     } else if (ps.chart >= 0) {
       // A part of a split patch: bilinear in its quad of the layout patch's polygon chart.
       auto& map = chartMaps[ps.chart];
