@@ -55,7 +55,10 @@ void nameLeftPorts(const GeodesicGraph& graph, Layout& layout) {
 
 BarrierSet layoutBarriers(const GeodesicGraph& graph, const Layout& layout) {
   BarrierSet b(graph.mesh().numFaces());
-  for (int i = 0; i < int(layout.separatrices.size()); ++i) b.add(layout.separatrices[i].path, i);
+  std::vector<std::pair<const TracedPath*, int>> paths;
+  paths.reserve(layout.separatrices.size());
+  for (int i = 0; i < int(layout.separatrices.size()); ++i) paths.push_back({&layout.separatrices[i].path, i});
+  b.add(paths);
   return b;
 }
 

@@ -343,14 +343,37 @@ ChordRelation relateChords(double a1, double b1, double a2, double b2) {
   return inside(a2) != inside(b2) ? ChordRelation::Crossing : ChordRelation::Disjoint;
 }
 
-void BarrierSet::add(const TracedPath& path, int id) {
-  for (std::size_t i = 0; i < path.segments.size(); ++i) {
-    const PathSegment& s = path.segments[i];
-    if (s.face < 0 || s.face >= int(perFace_.size())) continue;
-    perFace_[s.face].push_back({s.from, s.to, s.direction, id, path.points[i].position, path.points[i + 1].position,
-                                path.points[i].kind == PathPoint::Crossing, path.points[i + 1].kind == PathPoint::Crossing});
+void BarrierSet::add(const std::vector<std::pair<const TracedPath*, int>>& paths) {
+  const int numFaces = int(start_.size()) - 1;
+  auto inRange = [&](const PathSegment& s) { return s.face >= 0 && s.face < numFaces; };
+  // Each face's new size, then its chords: the old ones first, the new ones after them.
+  std::vector<int> start(start_.size(), 0);
+  for (int f = 0; f < numFaces; ++f) start[f + 1] = start_[f + 1] - start_[f];
+  for (const auto& entry : paths)
+    for (const PathSegment& s : entry.first->segments)
+      if (inRange(s)) ++start[s.face + 1];
+  for (int f = 0; f < numFaces; ++f) start[f + 1] += start[f];
+  std::vector<Chord> chords(static_cast<std::size_t>(start[numFaces]));
+  std::vector<int> next(start.begin(), start.end() - 1);  // where each face's next chord goes
+  for (int f = 0; f < numFaces; ++f)
+    for (int i = start_[f]; i < start_[f + 1]; ++i) chords[next[f]++] = chords_[i];
+  for (const auto& [path, id] : paths) {
+    for (std::size_t i = 0; i < path->segments.size(); ++i) {
+      const PathSegment& s = path->segments[i];
+      if (!inRange(s)) continue;
+      chords[next[s.face]++] = {s.from,
+                                s.to,
+                                s.direction,
+                                id,
+                                path->points[i].position,
+                                path->points[i + 1].position,
+                                path->points[i].kind == PathPoint::Crossing,
+                                path->points[i + 1].kind == PathPoint::Crossing};
+    }
+    ++count_;
   }
-  ++count_;
+  chords_ = std::move(chords);
+  start_ = std::move(start);
 }
 
 std::vector<TracedPath> traceFromPort(const GeodesicGraph& graph, int port, const SearchOptions& options) {

@@ -11,8 +11,10 @@
 #include "tracing/geodesic_graph.h"
 #include "tracing/traced_path.h"
 
+#include <algorithm>
 #include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace fcql {
@@ -20,12 +22,18 @@ namespace fcql {
 /// Called from the calling thread as searches complete: (searches done, searches in all).
 using ProgressCallback = std::function<void(int done, int total)>;
 
-/// Separatrices that searches must respect, indexed per face for fast lookups.
+/// Separatrices that searches must respect, indexed per face for fast lookups: the chords of
+/// all faces in one array, face by face (each face's in the order they were added), so that a
+/// whole layout's barriers take two allocations instead of one per face, and a search's test
+/// of a face holding none reads two neighbouring integers.
 class BarrierSet {
 public:
-  explicit BarrierSet(int numFaces = 0) : perFace_(numFaces) {}
+  explicit BarrierSet(int numFaces = 0) : start_(std::size_t(std::max(0, numFaces)) + 1, 0) {}
   /// Adds every segment of `path` as a barrier with identifier `id`.
-  void add(const TracedPath& path, int id);
+  void add(const TracedPath& path, int id) { add({{&path, id}}); }
+  /// Adds every segment of each path as a barrier with the path's identifier, in the order
+  /// given (the same per-face order as adding them one by one, in one pass over the set).
+  void add(const std::vector<std::pair<const TracedPath*, int>>& paths);
   bool empty() const { return count_ == 0; }
   int size() const { return count_; }
 
@@ -39,10 +47,19 @@ public:
     /// would have ended, and only the part up to the real end is a barrier.
     bool endsInsideA = false, endsInsideB = false;
   };
-  const std::vector<Chord>& inFace(int f) const { return perFace_[f]; }
+  /// The chords of one face, in the order they were added.
+  struct Chords {
+    const Chord *first, *last;
+    const Chord* begin() const { return first; }
+    const Chord* end() const { return last; }
+    bool empty() const { return first == last; }
+    std::size_t size() const { return std::size_t(last - first); }
+  };
+  Chords inFace(int f) const { return {chords_.data() + start_[f], chords_.data() + start_[f + 1]}; }
 
 private:
-  std::vector<std::vector<Chord>> perFace_;
+  std::vector<Chord> chords_;  ///< face by face
+  std::vector<int> start_;     ///< face f's chords: [start_[f], start_[f + 1])
   int count_ = 0;
 };
 
