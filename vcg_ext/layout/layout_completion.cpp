@@ -161,8 +161,13 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
     }
     bool improved = false;
     std::size_t danglingNow = dangling.size();
-    for (const auto& [freedPorts, option] : options) {
-      if (report.trials >= budget || current == 0) break;
+    for (std::size_t o = 0; o < options.size(); ++o) {
+      const auto& [freedPorts, option] = options[o];
+      if (current == 0) break;
+      if (report.trials >= budget) {  // the ports of the options not tried could still be joined
+        for (std::size_t rest = o; rest < options.size(); ++rest) report.untriedPorts.insert(options[rest].second.from);
+        break;
+      }
       const std::vector<char> used = usedPorts(graph, layout);
       // Its ports joined by a trial kept before: the dangling one it starts from, and the one it
       // ends at unless that is a port of a separatrix it frees (a re-route).
@@ -229,9 +234,10 @@ CompletionReport completeLayout(const GeodesicGraph& graph, Layout& layout, cons
     }
   }
   report.tJunctionsAfter = current;
-  if (report.trials >= budget && current > 0)
-    for (auto& [port, why] : report.reasons)
-      why += " (the completion's " + std::to_string(budget) + " trials were used up: --completion-trials)";
+  for (auto& [port, why] : report.reasons)
+    if (report.untriedPorts.count(port))
+      why += " (the completion's " + std::to_string(budget) +
+             " trials were used up before all its options were tried: --completion-trials)";
   return report;
 }
 

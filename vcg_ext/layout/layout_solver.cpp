@@ -47,7 +47,11 @@ void nameLeftPorts(const GeodesicGraph& graph, Layout& layout) {
     layout.leftPorts.push_back(line);
   };
   for (const auto& s : layout.separatrices)
-    if (s.kind == LayoutSeparatrix::TJunction) name(s.portA, "ends at a t-junction");
+    if (s.kind == LayoutSeparatrix::TJunction)
+      name(s.portA, layout.borderOutOfReach.count(s.portA)
+                        ? "ends at a t-junction (no field-coherent path from it reaches the border or a dangling port, "
+                          "even crossing the layout orthogonally)"
+                        : "ends at a t-junction");
   for (int p : layout.unresolvedPorts) name(p, "is left unresolved: no path from it reaches a separatrix, the border or another port");
 }
 
@@ -174,9 +178,13 @@ void propagateDanglingPorts(const GeodesicGraph& graph, Layout& layout) {
       std::vector<int> ports;
       for (std::size_t i : atBarrier) ports.push_back(dangling[i]);
       acrossResults = traceFromPorts(graph, ports, across);
-      for (std::size_t j = 0; j < atBarrier.size(); ++j)
+      for (std::size_t j = 0; j < atBarrier.size(); ++j) {
+        bool reached = false;
         for (const auto& p : acrossResults[j])
-          if (p.end != TracedPath::Barrier && p.sinkPort != ports[j]) best[atBarrier[j]] = &p;
+          if (p.end != TracedPath::Barrier && p.sinkPort != ports[j]) best[atBarrier[j]] = &p, reached = true;
+        if (reached) layout.borderOutOfReach.erase(ports[j]);
+        else layout.borderOutOfReach.insert(ports[j]);
+      }
     }
     std::vector<const TracedPath*> found;
     for (std::size_t i = 0; i < best.size(); ++i) {

@@ -24,6 +24,7 @@
 
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,9 @@ struct CompletionReport {
   int freedSeparatrices = 0; ///< separatrices replaced in the trials kept
   /// For the ports still dangling when it last looked: why no separatrix joins them.
   std::map<int, std::string> reasons;
+  /// The dangling ports with options (sets of separatrices to free) left untried when the
+  /// trials ran out: the only ones a larger --completion-trials could still join.
+  std::set<int> untriedPorts;
 };
 
 struct Layout {
@@ -87,6 +91,9 @@ struct Layout {
   int tJunctions = 0;
   int borderConnections = 0;
   std::vector<int> unresolvedPorts;  ///< dangling ports no propagation could resolve
+  /// On a surface with a border: the ports propagation ended at a t-junction after a search
+  /// from them, crossing the layout orthogonally, reached neither the border nor a dangling port.
+  std::set<int> borderOutOfReach;
   /// Per t-junction or unresolved port: port, singularity vertex and why it was left.
   std::vector<std::string> leftPorts;
   int deadEndsRemoved = 0;        ///< separatrices dropped by removeDeadEnds
