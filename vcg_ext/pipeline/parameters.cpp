@@ -119,8 +119,10 @@ std::vector<S> makeTable() {
                       "root of the area per quad). 0: the quad size decides."));
   t.push_back(integer("smooth", "smooth", Q, &P::smooth, 5, 0, 1000, "iterations", "Smoothing iterations",
                       "smoothing iterations",
-                      "Smoothing passes over the quad mesh (towards the cross field, reprojected on the surface, "
-                      "never folding a quad). 0 keeps the sampled positions."));
+                      "Smoothing passes over the quad mesh (towards the cross field, reprojected on the surface; "
+                      "a move that would fold a quad is not taken, folds the sampling left are untangled, and any "
+                      "that remain are counted in quad.inverted_quads with a warning). 0 keeps the sampled "
+                      "positions."));
   t.push_back(real("max_deviation", "max-deviation", Q, &P::maxDeviation, 0.01, 0, 1, "of the bounding-box diagonal",
                    "Largest deviation (fraction of the diagonal)", "largest deviation from the surface",
                    "Largest distance allowed between the quad mesh and the surface. Where it may be exceeded "
