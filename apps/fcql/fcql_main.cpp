@@ -36,6 +36,9 @@ std::string usage() {
              "        the options below; --markdown: as the README's tables, with the MeshLab/pymeshlab\n"
              "        names; --mlx field,trace,...: the <Param> lines of a MeshLab script for those stages\n"
              "\n"
+             "--quiet (every command): no progress or log lines on stderr, only warnings (\"fcql: warning: ...\",\n"
+             "        e.g. quads left folded, ports left dangling) and errors\n"
+             "\n"
              "field options:\n") +
          fcql::parametersUsage(PipelineStage::Field) + "\ntrace options:\n" + fcql::parametersUsage(PipelineStage::Trace) +
          "\nlayout options:\n" + fcql::parametersUsage(PipelineStage::Layout) + "\nquad options (run):\n" +

@@ -90,14 +90,16 @@ LoadedMesh loadInput(const CommandLine& cl) {
 }
 
 /// Log lines as "fcql: ..." on stderr; of the progress messages, what a stage starts with, and
-/// the tracing's count of ports every 25% (rewritten in place every 5% on a terminal).
+/// the tracing's count of ports every 25% (rewritten in place every 5% on a terminal). Quiet:
+/// the warnings alone (what went wrong without failing the run: folded quads, ports left).
 StageObserver cliObserver(bool quiet) {
   StageObserver o;
-  if (quiet) return o;
-  o.line = [](const LogLine& line) {
+  o.line = [quiet](const LogLine& line) {
+    if (quiet && line.kind != LogLine::Warning) return;
     const char* kind = line.kind == LogLine::Warning ? "warning: " : line.kind == LogLine::Note ? "note: " : "";
     std::cerr << "fcql: " << kind << line.text << std::endl;
   };
+  if (quiet) return o;
   const bool terminal = isatty(2);
   auto last = std::make_shared<int>(-100);
   o.progress = [terminal, last](int percent, const std::string& what) {

@@ -65,6 +65,15 @@ if [ -f "$shared/data/meshes/eight.obj" ]; then
   else
     fail "fcql layout on eight exited non-zero"
   fi
+  # --quiet keeps the warnings: the lilium (open, its own field) leaves ports dangling.
+  if "$fcql" layout "$shared/data/meshes/lilium.obj" --field "$shared/data/meshes/lilium.ffield" \
+    --out "$tmp/lilium" --quiet 2>"$tmp/lilium.err"; then
+    grep -q '^fcql: warning: .*ports could not be connected' "$tmp/lilium.err" ||
+      fail "lilium --quiet: no warning about its dangling ports: $(head -c 300 "$tmp/lilium.err")"
+    ! grep -qv '^fcql: warning: ' "$tmp/lilium.err" || fail "lilium --quiet: lines other than warnings: $(head -c 300 "$tmp/lilium.err")"
+  else
+    fail "fcql layout on lilium exited non-zero"
+  fi
 else
   echo "skip: $shared/data/meshes is absent, shared-mesh checks skipped"
 fi
