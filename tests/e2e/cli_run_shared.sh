@@ -76,6 +76,15 @@ for scale in 0.02 0.01; do
     if [ "$folded" -gt "$allowed" ]; then
       fail "$name at --scale $scale: $folded folded quads (allowed $allowed), min scaled Jacobian $(quad_value "$s" min_scaled_jacobian)"
     fi
+    # A patch-wise fallback for the distance bound that would touch more than a quarter of the
+    # patches gives way to smaller field-aligned quads: camelhead at 1% had 53 of its 115
+    # patches' sides by arc length and 14.7% of its quads off the field; refined, 7.5%.
+    if [ "$name@$scale" = camelhead@0.01 ]; then
+      arc=$(quad_value "$s" field_bound_arc_length_patches)
+      mis=$(quad_value "$s" misaligned_pct)
+      [ "$arc" = 0 ] || fail "camelhead at 1%: $arc patches' sides by arc length (the fallback should give way)"
+      awk -v m="$mis" 'BEGIN {exit !(m <= 10)}' || fail "camelhead at 1%: $mis% of the quads misaligned (at most 10%)"
+    fi
     echo "$name at --scale $scale: $folded folded quads, min scaled Jacobian $(quad_value "$s" min_scaled_jacobian), bound $bound"
   done
 done
