@@ -296,6 +296,24 @@ build.
   only there. "The completion's N trials were used up" now goes only on ports whose options
   were still untried when the budget ran out. On the lilium all four ports left had such
   options. With `--completion-trials 400` all 117 options are tried in 2.8 s; none is kept.
+- **A patch-wise distance fallback gives way at a quarter of the patches, not at half.**
+  The bound's local fallback (arc length on the sides of the patches near the points too far,
+  the field kept inside) was kept while it touched at most half of the patches. Two of the
+  variant runs below kept one that touched just under half: camelhead at `--scale 0.01` (53
+  of 115 patches, 14.7% of the quads more than π/16 off the field, 5.6% per face) and fandisk
+  rotated and scaled (29 of 59, 41.4%). With a quarter (`kLocalFallbackShare`) both refine
+  their field-aligned grid instead: 7.5% (3.2% per face) with 22.7K quads instead of 16.8K
+  (one refinement), and 9.8% with 28.9K quads instead of 5.4K (four refinements). No other
+  shared mesh changes at 2% or 1% (same `quad.obj`); the dragon's fallback touches 94 of 5,852.
+- **One fold no longer costs the whole field.** The bunny at `--scale 0.01` had 32.8% of its
+  quads off the field: its field-aligned pass left one quad folded (scaled Jacobian −0.07, on
+  an ear). The plain smoothing kept that fold, and the patches around it sampled again with
+  mean-value interiors folded 18 quads. So the whole pass without the field was kept. A third
+  local way now comes first: arc length on those patches' sides alone, the field kept inside.
+  It leaves no fold and 6.3% of the quads off the field (1.5% per face, was 7.8%); least scaled
+  Jacobian 0.148 → 0.100, mean 0.971 → 0.986. It is tried only where the first two ways both fail in the first
+  round, so every other shared mesh keeps the same `quad.obj` at 2% and at 1%.
+  `e2e.cli_run_shared` checks both cases.
 - **Warnings under `--quiet`.** All 34 runs below were made with `--quiet`, and the seven with
   folds or t-junctions printed nothing: `--quiet` dropped the warnings with the log. It now
   keeps them (and `--smooth`'s help no longer says that no quad is ever folded).

@@ -85,6 +85,14 @@ for scale in 0.02 0.01; do
       [ "$arc" = 0 ] || fail "camelhead at 1%: $arc patches' sides by arc length (the fallback should give way)"
       awk -v m="$mis" 'BEGIN {exit !(m <= 10)}' || fail "camelhead at 1%: $mis% of the quads misaligned (at most 10%)"
     fi
+    # One fold left by the field-aligned pass no longer costs the field: the bunny at 1% had one
+    # (scaled Jacobian -0.07) that only the whole pass without the field removed, with 32.8% of
+    # its quads off the field; arc length on the sides of the patches around it, 6.3%.
+    if [ "$name@$scale" = bunny@0.01 ]; then
+      mis=$(quad_value "$s" misaligned_pct)
+      awk -v m="$mis" 'BEGIN {exit !(m <= 10)}' || fail "bunny at 1%: $mis% of the quads misaligned (at most 10%)"
+      [ "$(quad_value "$s" field_folds_without_field)" = false ] || fail "bunny at 1%: the pass without the field was kept"
+    fi
     echo "$name at --scale $scale: $folded folded quads, min scaled Jacobian $(quad_value "$s" min_scaled_jacobian), bound $bound"
   done
 done

@@ -46,7 +46,9 @@ void describe(const QuadStageResult& s, const QuadrangulationOptions& options, i
   if (r.foldsResmoothed || r.foldsResampled || r.foldsWithoutField)
     log.info(std::string("Folds left by the field-aligned pass: ") +
              (r.foldsWithoutField ? "the pass without the field folded fewer and was kept"
-              : r.foldsResampled  ? "their patches were sampled again with mean-value coordinates"
+              : r.foldsSidesByArcLength
+                  ? "their patches were sampled again with arc length on their sides (the field kept inside)"
+              : r.foldsResampled ? "their patches were sampled again with mean-value coordinates"
                                   : "the plain smoothing folded fewer and was kept"));
   if (q.blendedPatches + q.meanValuePatches > 0)
     log.info("Field-aligned maps: " + std::to_string(q.alignedPatches) + " patches aligned, " +

@@ -32,10 +32,12 @@ struct QuadrangulationResult {
   int dissolvedVertices = 0;
   SmoothingReport smoothing;
   /// With a field, a few quads were left folded after smoothing towards it: the plain
-  /// smoothing folded fewer (foldsResmoothed), or their patches sampled again with mean-value
-  /// coordinates inside did (foldsResampled).
+  /// smoothing folded fewer (foldsResmoothed), or their patches sampled again did
+  /// (foldsResampled): with mean-value coordinates inside, or with arc length on their sides
+  /// alone, the field kept inside (foldsSidesByArcLength as well).
   bool foldsResmoothed = false;
   bool foldsResampled = false;
+  bool foldsSidesByArcLength = false;
   /// ... or, still folded, the pass (or, last, the whole stage) made without the field folded
   /// fewer and was kept.
   bool foldsWithoutField = false;
