@@ -314,6 +314,14 @@ build.
   Jacobian 0.148 → 0.100, mean 0.971 → 0.986. It is tried only where the first two ways both fail in the first
   round, so every other shared mesh keeps the same `quad.obj` at 2% and at 1%.
   `e2e.cli_run_shared` checks both cases.
+- **Refinements before the stage without the field.** Where the field-aligned grid missed
+  the distance bound at the asked size, the stage without the field was tried at that size
+  first and kept if it met the bound. The kitten decimated to half its faces took that way: 6.8K
+  quads, 34.9% of them off the field (14.0% per face). The field-aligned grid refined once
+  meets the bound with 11.5K quads and 12.6% (5.1%). The stage without the field now comes
+  only after the refinements, as it already did where they miss. Run both ways (an
+  environment switch in a test build), all twelve shared meshes at 2% and at 1% give the same
+  `quad.obj`: none of them took that way.
 - **Warnings under `--quiet`.** All 34 runs below were made with `--quiet`, and the seven with
   folds or t-junctions printed nothing: `--quiet` dropped the warnings with the log. It now
   keeps them (and `--smooth`'s help no longer says that no quad is ever folded).
