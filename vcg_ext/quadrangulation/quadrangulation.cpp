@@ -163,7 +163,7 @@ bool smoothOnlyAround(QuadrangulationResult& c, const QuadrangulationResult& fro
 /// the whole pass without the field: the bunny at --scale 0.01 had one fold (scaled Jacobian
 /// −0.07, on an ear) that (0) kept and (1) turned into 18; without the field, 32.8% of its quads
 /// were more than π/16 off the field, with (3) 6.3% and no fold.
-/// (0) and (1) change the mesh only near the folds: they start from the samples within
+/// (0), (1) and (3) change the mesh only near the folds: they start from the samples within
 /// kRefoldRings rings of the folds' corners (and of the patches sampled again), keep r's
 /// smoothed positions elsewhere and smooth only there (SmoothingOptions::frozen), so a try
 /// costs in proportion to the folds (the dragon: 0.3–0.9 s instead of 2–2.5 s for the whole
@@ -561,7 +561,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   // Still too far: the field-aligned grid is refined below; the stage without the field comes
   // only after the refinements (last block), even where it would meet the bound at the asked
   // size. The kitten decimated to half its faces met it without the field at
-  // 6.8K quads with 34.9% of them more than pi/16 off the field; refined once, 11.5K quads and
+  // 6.8K quads with 34.9% of them more than π/16 off the field; refined once, 11.5K quads and
   // 12.6%. (Before, the stage without the field was tried here first, at the asked size.)
   const QuadrangulationOptions active = options;
   // Each finer pass is sized from the last one tried. One that gets no closer (a sharp tip
