@@ -88,6 +88,11 @@ SmoothingOptions smoothingFor(const PatchLayout& layout, const QuadrangulationOp
   return smoothing;
 }
 
+/// How far a patch mark (patch_sampling.h) departs from the field-aligned map: arc-length
+/// sides, then mean-value interiors as well (the marks' own values are not in that order). A
+/// fallback raises a patch's mark, never lowers it.
+int departure(char mark) { return mark == kMeanValuePatch ? 2 : mark == kArcLengthSides ? 1 : 0; }
+
 /// The largest share of the layout's patches a patch-wise fallback for the distance bound may
 /// touch (arc-length sides, or mean-value interiors as well) and still be kept over the
 /// refinements: beyond it the fallback shears too much of the mesh. At a half, camelhead at
@@ -199,8 +204,9 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
       for (int q = 0; q < r.mesh.numQuads() && q < int(r.mesh.quadPatch.size()); ++q) {
         const auto& quad = r.mesh.quads[q];
         if (r.mesh.quadPatch[q] >= 0 && std::any_of(quad.begin(), quad.end(), [&](int v) { return region[v] != 0; }))
-          if (k == 1 || meanValue[r.mesh.quadPatch[q]] == kFieldPatch)
-            meanValue[r.mesh.quadPatch[q]] = k == 3 ? kArcLengthSides : kMeanValuePatch;
+          if (const char mark = k == 3 ? kArcLengthSides : kMeanValuePatch;
+              departure(meanValue[r.mesh.quadPatch[q]]) < departure(mark))
+            meanValue[r.mesh.quadPatch[q]] = mark;
       }
       c.mesh = resample ? samplePatches(layout, r.graph, r.lengths, &options.fieldDirections, &meanValue, &grids)
                         : samplePatches(layout, r.graph, r.lengths, nullptr, nullptr, &grids);
@@ -500,9 +506,6 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   auto patchwiseFrom = [&](QuadrangulationResult& start, const std::vector<Vec3>& startFar,
                            const QuadrangulationOptions& o, bool lastResort) {
     std::vector<char> marks(layout.patches.size(), kFieldPatch);
-    // How far a mark departs from the field-aligned map: arc-length sides, then mean-value
-    // interiors as well (the marks' own values are not in that order).
-    auto departure = [](char mark) { return mark == kMeanValuePatch ? 2 : mark == kArcLengthSides ? 1 : 0; };
     QuadrangulationResult local = start;
     std::vector<Vec3> localFar = startFar;
     for (const char level : {kArcLengthSides, kMeanValuePatch}) {

@@ -29,7 +29,8 @@ using ProgressCallback = std::function<void(int done, int total)>;
 class BarrierSet {
 public:
   explicit BarrierSet(int numFaces = 0) : start_(std::size_t(std::max(0, numFaces)) + 1, 0) {}
-  /// Adds every segment of `path` as a barrier with identifier `id`.
+  /// Adds every segment of `path` as a barrier with identifier `id`. Each call rebuilds the
+  /// array: many paths go in one call of the overload below (layoutBarriers).
   void add(const TracedPath& path, int id) { add({{&path, id}}); }
   /// Adds every segment of each path as a barrier with the path's identifier, in the order
   /// given (the same per-face order as adding them one by one, in one pass over the set).
