@@ -566,14 +566,13 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   // size. The kitten decimated to half its faces met it without the field at
   // 6.8K quads with 34.9% of them more than π/16 off the field; refined once, 11.5K quads and
   // 12.6%. (Before, the stage without the field was tried here first, at the asked size.)
-  const QuadrangulationOptions active = options;
   // Each finer pass is sized from the last one tried. One that gets no closer (a sharp tip
   // that a grid of that size happens to cut deeper, stretched or distorted patches) does not
   // end the refinements: the closer mesh is kept and the next size tried, up to the limit (the
   // camelhead's field-aligned quads, at most 1.15% of the diagonal from its surface after one
   // refinement, came 1.39% after the second, which ended the stage with an error, and within
   // the bound of 1% after the third).
-  QuadrangulationOptions finer = active;
+  QuadrangulationOptions finer = options;
   int refinements = r.refinements;
   double lastBound = r.deviationBound;
   int lastQuads = r.mesh.numQuads();
@@ -617,7 +616,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   auto stageWithoutField = [&]() -> const QuadrangulationResult* {
     if (!withoutFieldRun) {
       withoutFieldRun = true;
-      QuadrangulationOptions plain = active;
+      QuadrangulationOptions plain = options;
       plain.fieldDirections.clear();
       try {
         withoutField = quadrangulateWith(layout, plain, cache);
@@ -631,7 +630,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
     // Folds left by the field-aligned pass the refinements kept: other ways to sample it,
     // kept if they fold fewer and stay within the bound (or no farther than this one).
     const double bound = std::max(limit, r.deviationBound);
-    reduceFolds(r, layout, active, cache.grids, [&](QuadrangulationResult& c) {
+    reduceFolds(r, layout, options, cache.grids, [&](QuadrangulationResult& c) {
       measure(c);
       return c.deviationBound <= bound;
     });
@@ -640,10 +639,10 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
     // pass (at the asked size, cached) decides: if that folds no fewer, the stage is not run on
     // to its refinements, which are there for the distance bound, not for folds (the dragon:
     // 18 folds against the field's 15, then 15 after a refinement that cost 9 s).
-    const int left = active.fieldDirections.empty() ? 0 : foldedQuads(r.mesh);
+    const int left = options.fieldDirections.empty() ? 0 : foldedQuads(r.mesh);
     bool foldsFewer = left > 0;
     if (foldsFewer) {
-      QuadrangulationOptions plain = active;
+      QuadrangulationOptions plain = options;
       plain.fieldDirections.clear();
       try {
         foldsFewer = foldedQuads(measuredPass(plain).mesh) < left;
@@ -658,7 +657,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
         r.foldsResmoothed = r.foldsResampled = r.foldsSidesByArcLength = false;
       }
   }
-  if (r.deviationBound > limit && !active.fieldDirections.empty()) {
+  if (r.deviationBound > limit && !options.fieldDirections.empty()) {
     // Refined, the field-aligned maps still miss the bound: the whole stage without the field
     // (its own refinements) is kept if it meets it.
     if (const QuadrangulationResult* without = stageWithoutField(); without && without->deviationBound <= limit) {
