@@ -58,7 +58,8 @@ machine="$(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /pro
   echo "lilium: their own field). Times in seconds (wall clock; tracing runs on all cores). Paper: Table 1 of"
   echo "Pietroni et al. 2016, on their machine, with their own fields and, for rockerarm, a 70K-face mesh."
   echo
-  echo "S: singularities; t-j: t-junctions; dangling: ports left dangling after the solving cycle; invalid:"
+  echo "S: singularities; t-j: t-junctions; dangling: ports left dangling after the solving cycle (on open"
+  echo "meshes also those that propagation then takes to the border, where they end as they should); invalid:"
   echo "patches that are not 4-sided disks; quads and irr.: faces and irregular vertices of the quad mesh; BC:"
   echo "patches of the quad mesh's base complex (the regions its own separatrices bound: the layout's patches"
   echo "when the quad mesh keeps the layout's structure); mis. %: quads whose edges are more than π/16 off the"

@@ -1,5 +1,7 @@
 #include "quadrangulation/quad_smoothing.h"
 
+#include "quadrangulation/feature_snapping.h"
+
 #include "quadrangulation/field_relaxation.h"
 #include "quadrangulation/fold_repair.h"
 
@@ -481,6 +483,14 @@ SmoothingReport smoothWhole(QuadMesh& quads, const std::vector<Vec3>& surfacePos
   }
   std::unique_ptr<ClosestPointIndex> features;
   if (!featureSegments.empty()) features = std::make_unique<ClosestPointIndex>(surfacePositions, featureSegments);
+  // Grid lines sampled beside a straight sharp crease (a layout side traced along it) go onto
+  // it first (feature_snapping.h): the smoothing below moves only where quads are poor.
+  if (features) {
+    std::vector<char> movable(nv, 0);
+    for (int v = 0; v < nv; ++v)
+      movable[v] = !fixed[v] && !neighbours[v].empty() && (options.frozen.empty() || !options.frozen[v]);
+    report.snappedMoves += snapGridLinesToFeatures(quads, surfacePositions, featureSegments, slidable, *features, movable, neighbours);
+  }
 
   // How repairFolds may move each vertex: inner ones on the surface, feature vertices along
   // their lines (not where lines meet), border vertices not at all.
