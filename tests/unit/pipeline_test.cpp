@@ -1,9 +1,12 @@
 #include "mesh/generators.h"
+#include "mesh/vertex_welding.h"
 #include "pipeline/figures.h"
 #include "pipeline/parameters.h"
 #include "pipeline/quad_stage.h"
 
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -155,6 +158,78 @@ TEST(PipelineStages, RoundedBoxGivesOneConsistentRecord) {
       EXPECT_NE(line.kind, LogLine::Warning) << line.text;
     }
   EXPECT_EQ(logged, seen);
+}
+
+// A cube of 15×15 squares a face (sharp edges, as a CAD part is): the layout's sides run
+// beside its edges, in the triangles next to them; the quads must still have their vertices on
+// every edge, so that the quad mesh is the cube itself. Before the grid lines were moved onto
+// the creases, only the 8 corners were on them and the quads cut every edge (0.63% of the
+// diagonal away).
+TEST(PipelineStages, ACubesQuadsFollowItsSharpEdges) {
+  const int n = 15;
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> faces;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : {-0.5, 0.5}) {
+      const int base = int(positions.size());
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+          Vec3 p;
+          p[axis] = side;
+          p[(axis + 1) % 3] = -0.5 + double(i) / n;
+          p[(axis + 2) % 3] = -0.5 + double(j) / n;
+          positions.push_back(p);
+        }
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const int a = base + j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+          if (side > 0) faces.push_back({a, b, c}), faces.push_back({a, c, d});
+          else faces.push_back({a, c, b}), faces.push_back({a, d, c});
+        }
+    }
+  VertexWelding welded = weldCoincidentVertices(SurfaceMesh(positions, faces));
+  ASSERT_TRUE(welded.welded);
+  const SurfaceMesh& mesh = welded.mesh;
+  ASSERT_EQ(mesh.numFaces(), 6 * 2 * n * n);
+  PipelineParameters p;
+  p.threads = 1;
+  MeshInput input;
+  input.mesh = &mesh;
+  input.name = "cube";
+  const FieldStageResult field = runFieldStage(input, p, FieldSource{}, StageObserver{});
+  const TraceStageResult trace = runTraceStage(mesh, field.field, field.analysis, p, StageObserver{});
+  const LayoutStageResult layout = runLayoutStage(mesh, field.field, field.analysis, trace, p, StageObserver{});
+  const QuadStageResult quad = runQuadStage(mesh, field.field, layout, p, StageObserver{});
+  EXPECT_EQ(layout.figures.find("layout.patches")->integer, 6);
+  const QuadMesh& q = quad.quad.mesh;
+  // Every quad lies in one face of the cube, and each of the 12 edges holds quad vertices
+  // along its whole length.
+  auto onPlane = [](const Vec3& x, int axis, double side) { return std::abs(x[axis] - side) < 1e-9; };
+  int across = 0;
+  for (const auto& f : q.quads) {
+    bool inOneFace = false;
+    for (int axis = 0; axis < 3 && !inOneFace; ++axis)
+      for (double side : {-0.5, 0.5}) {
+        bool all = true;
+        for (int v : f) all = all && onPlane(q.positions[v], axis, side);
+        inOneFace = inOneFace || all;
+      }
+    across += !inOneFace;
+  }
+  EXPECT_EQ(across, 0);
+  std::vector<int> onEdge(12, 0);
+  for (const Vec3& x : q.positions) {
+    int e = 0;
+    for (int axis = 0; axis < 3; ++axis)  // edges along `axis`: the other two coordinates at ±0.5
+      for (double s1 : {-0.5, 0.5})
+        for (double s2 : {-0.5, 0.5}) {
+          if (onPlane(x, (axis + 1) % 3, s1) && onPlane(x, (axis + 2) % 3, s2)) ++onEdge[e];
+          ++e;
+        }
+  }
+  for (int e = 0; e < 12; ++e) EXPECT_GE(onEdge[e], 10) << "edge " << e;
+  EXPECT_LT(quad.figures.find("quad.hausdorff_rel")->real, 1e-9);
+  EXPECT_EQ(quad.figures.find("quad.inverted_quads")->integer, 0);
 }
 
 TEST(PipelineStages, TooManyQuadsFailBeforeAnyWorkNamingTheFinestValue) {
