@@ -232,6 +232,44 @@ TEST(PipelineStages, ACubesQuadsFollowItsSharpEdges) {
   EXPECT_EQ(quad.figures.find("quad.inverted_quads")->integer, 0);
 }
 
+// A cube of 12 triangles, as CAD software exports one: half its edges are longer than its side,
+// 58% of its diagonal, far too coarse for a field with one direction per triangle. The run goes
+// through and the log says why its layout is poor and what to do, once, at the field stage; the
+// rounded box above gets no warning.
+TEST(PipelineStages, ACoarseMeshIsNamedInAWarning) {
+  std::vector<Vec3> positions;
+  for (int x = 0; x < 2; ++x)
+    for (int y = 0; y < 2; ++y)
+      for (int z = 0; z < 2; ++z) positions.push_back(Vec3(x, y, z));
+  const auto at = [](int x, int y, int z) { return 4 * x + 2 * y + z; };
+  const std::vector<std::array<int, 4>> sides = {
+      {at(0, 0, 0), at(0, 0, 1), at(0, 1, 1), at(0, 1, 0)}, {at(1, 0, 0), at(1, 1, 0), at(1, 1, 1), at(1, 0, 1)},
+      {at(0, 0, 0), at(1, 0, 0), at(1, 0, 1), at(0, 0, 1)}, {at(0, 1, 0), at(0, 1, 1), at(1, 1, 1), at(1, 1, 0)},
+      {at(0, 0, 0), at(0, 1, 0), at(1, 1, 0), at(1, 0, 0)}, {at(0, 0, 1), at(1, 0, 1), at(1, 1, 1), at(0, 1, 1)}};
+  std::vector<std::array<int, 3>> faces;
+  for (const auto& q : sides) faces.push_back({q[0], q[1], q[2]}), faces.push_back({q[0], q[2], q[3]});
+  const SurfaceMesh mesh(positions, faces);
+  PipelineParameters p;
+  p.threads = 1;
+  MeshInput input;
+  input.mesh = &mesh;
+  input.name = "cube of 12 triangles";
+  const FieldStageResult field = runFieldStage(input, p, FieldSource{}, StageObserver{});
+  const TraceStageResult trace = runTraceStage(mesh, field.field, field.analysis, p, StageObserver{});
+  const LayoutStageResult layout = runLayoutStage(mesh, field.field, field.analysis, trace, p, StageObserver{});
+  const QuadStageResult quad = runQuadStage(mesh, field.field, layout, p, StageObserver{});
+  int coarse = 0;
+  for (const auto* log : {&field.log, &trace.log, &layout.log, &quad.log})
+    for (const LogLine& line : *log)
+      if (line.kind == LogLine::Warning && line.text.find("The mesh is coarse") == 0) {
+        ++coarse;
+        EXPECT_NE(line.text.find("longer than 57% of its bounding-box diagonal"), std::string::npos) << line.text;
+        EXPECT_NE(line.text.find("subdivide the mesh first"), std::string::npos) << line.text;
+      }
+  EXPECT_EQ(coarse, 1);
+  EXPECT_EQ(quad.figures.find("quad.inverted_quads")->integer, 0);
+}
+
 TEST(PipelineStages, TooManyQuadsFailBeforeAnyWorkNamingTheFinestValue) {
   const SurfaceMesh mesh = makeExample("sphere");
   PipelineParameters p;
