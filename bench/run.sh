@@ -296,8 +296,16 @@ parameters at 2% and 1% of the diagonal; the table above is the bench run after 
   2. **The icosahedron (20 faces)** gets 29,887 quads where its size asks for about 2,750, a
      base complex of 367 patches for 41, and 37.8% misaligned quads: each of its 30 edges is
      sharp (41.8°), and a field with one direction per face can only place singularities at
-     vertices, while quads on a triangle need one inside it. Not changed; the 80-face one is
-     fine (11 patches, 6.7%).
+     vertices, while quads on a triangle need one inside it; the 80-face one is fine (11
+     patches, 6.7%). Tried here the same way: a cube of 12 triangles, as CAD software exports
+     one, gets 34 patches and 46% of its quads off the field, and an STL-like cylinder (64
+     segments round, fans on its caps, two index-1 singularities at their centres) 2 invalid
+     patches, 74% off the field and a mean scaled Jacobian of 0.59. Split by midpoint
+     subdivision (4 and 3 times), both get 6 patches and under 1%. The run now warns when half
+     the edges are longer than 20% of the bounding-box diagonal (those three are at 29–58%,
+     the 80-face icosahedron at 17%, a cube of 4×4 squares a face at 14%, the shared meshes at
+     0.8–2.1%) and says to subdivide; refining such a mesh by itself would change the faces the
+     field file and the MeshLab document refer to, and is not done.
   3. **`layout.dangling_ports` on open meshes** counts the ports that propagation then takes to
      the border (hemisphere 4, annulus 12, equal to `layout.border_connections`, conforming
      layouts). That is its definition (after the solving cycle and the completion); the README
