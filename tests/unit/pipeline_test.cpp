@@ -16,6 +16,27 @@ using namespace fcql;
 
 namespace {
 
+/// The four stages with the default parameters on one thread, as `fcql run` calls them.
+struct AllStages {
+  FieldStageResult field;
+  TraceStageResult trace;
+  LayoutStageResult layout;
+  QuadStageResult quad;
+};
+AllStages runAllStages(const SurfaceMesh& mesh, const std::string& name) {
+  PipelineParameters p;
+  p.threads = 1;
+  MeshInput input;
+  input.mesh = &mesh;
+  input.name = name;
+  AllStages r;
+  r.field = runFieldStage(input, p, FieldSource{}, StageObserver{});
+  r.trace = runTraceStage(mesh, r.field.field, r.field.analysis, p, StageObserver{});
+  r.layout = runLayoutStage(mesh, r.field.field, r.field.analysis, r.trace, p, StageObserver{});
+  r.quad = runQuadStage(mesh, r.field.field, r.layout, p, StageObserver{});
+  return r;
+}
+
 std::string errorOf(PipelineParameters& p, const char* name, const std::string& value, ParameterNaming naming) {
   try {
     p.setFromText(parameterSpec(name), value, naming);
@@ -191,16 +212,9 @@ TEST(PipelineStages, ACubesQuadsFollowItsSharpEdges) {
   ASSERT_TRUE(welded.welded);
   const SurfaceMesh& mesh = welded.mesh;
   ASSERT_EQ(mesh.numFaces(), 6 * 2 * n * n);
-  PipelineParameters p;
-  p.threads = 1;
-  MeshInput input;
-  input.mesh = &mesh;
-  input.name = "cube";
-  const FieldStageResult field = runFieldStage(input, p, FieldSource{}, StageObserver{});
-  const TraceStageResult trace = runTraceStage(mesh, field.field, field.analysis, p, StageObserver{});
-  const LayoutStageResult layout = runLayoutStage(mesh, field.field, field.analysis, trace, p, StageObserver{});
-  const QuadStageResult quad = runQuadStage(mesh, field.field, layout, p, StageObserver{});
-  EXPECT_EQ(layout.figures.find("layout.patches")->integer, 6);
+  const AllStages run = runAllStages(mesh, "cube");
+  const QuadStageResult& quad = run.quad;
+  EXPECT_EQ(run.layout.figures.find("layout.patches")->integer, 6);
   const QuadMesh& q = quad.quad.mesh;
   // Every quad lies in one face of the cube, and each of the 12 edges holds quad vertices
   // along its whole length.
@@ -249,17 +263,9 @@ TEST(PipelineStages, ACoarseMeshIsNamedInAWarning) {
   std::vector<std::array<int, 3>> faces;
   for (const auto& q : sides) faces.push_back({q[0], q[1], q[2]}), faces.push_back({q[0], q[2], q[3]});
   const SurfaceMesh mesh(positions, faces);
-  PipelineParameters p;
-  p.threads = 1;
-  MeshInput input;
-  input.mesh = &mesh;
-  input.name = "cube of 12 triangles";
-  const FieldStageResult field = runFieldStage(input, p, FieldSource{}, StageObserver{});
-  const TraceStageResult trace = runTraceStage(mesh, field.field, field.analysis, p, StageObserver{});
-  const LayoutStageResult layout = runLayoutStage(mesh, field.field, field.analysis, trace, p, StageObserver{});
-  const QuadStageResult quad = runQuadStage(mesh, field.field, layout, p, StageObserver{});
+  const AllStages run = runAllStages(mesh, "cube of 12 triangles");
   int coarse = 0;
-  for (const auto* log : {&field.log, &trace.log, &layout.log, &quad.log})
+  for (const auto* log : {&run.field.log, &run.trace.log, &run.layout.log, &run.quad.log})
     for (const LogLine& line : *log)
       if (line.kind == LogLine::Warning && line.text.find("The mesh is coarse") == 0) {
         ++coarse;
@@ -267,7 +273,7 @@ TEST(PipelineStages, ACoarseMeshIsNamedInAWarning) {
         EXPECT_NE(line.text.find("subdivide the mesh first"), std::string::npos) << line.text;
       }
   EXPECT_EQ(coarse, 1);
-  EXPECT_EQ(quad.figures.find("quad.inverted_quads")->integer, 0);
+  EXPECT_EQ(run.quad.figures.find("quad.inverted_quads")->integer, 0);
 }
 
 TEST(PipelineStages, TooManyQuadsFailBeforeAnyWorkNamingTheFinestValue) {
