@@ -97,15 +97,15 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
            std::to_string(a.numPorts()) + ", index sum: " + formatQuarterIndex(a.indexSumQuarters()) +
            " (Euler characteristic " + std::to_string(mesh.eulerCharacteristic()) + ")");
   for (const std::string& warning : fieldWarnings(mesh, a)) log.warning(warning);
-  const double diagonal = mesh.boundingBoxDiagonal();
-  if (diagonal > 0 && medianEdgeLength(mesh) > kCoarseMedianEdge * diagonal) {
+  const double diagonal = mesh.boundingBoxDiagonal(), medianEdge = medianEdgeLength(mesh);
+  if (diagonal > 0 && medianEdge > kCoarseMedianEdge * diagonal) {
     char line[640];
     std::snprintf(line, sizeof line,
                   "The mesh is coarse: half its edges are longer than %.0f%% of its bounding-box diagonal. The cross "
                   "field has one direction per triangle and its singularities lie on vertices, so large triangles give "
                   "a poor layout (extra patches, quads off the field); subdivide the mesh first (midpoint subdivision "
                   "keeps its shape: MeshLab's Subdivision Surfaces: Midpoint) until its edges are a few quad edges long",
-                  std::floor(100 * medianEdgeLength(mesh) / diagonal));
+                  std::floor(100 * medianEdge / diagonal));
     log.warning(line);
   }
   log.info("Time: cross field and analysis " + formatSeconds(r.seconds));
