@@ -90,31 +90,28 @@ int snapGridLinesToFeatures(QuadMesh& quads, const std::vector<Vec3>& surfacePos
   for (std::size_t i = 0; i < moved.size(); ++i) quads.positions[moved[i]] = nearest[moved[i]].point;
   // Undo, a quad at a time, the snaps of the quads they spoil, until none is.
   std::vector<char> undone(moved.size(), 0);
+  // Puts vertex v back if it was snapped and is not back yet; says whether it did.
+  const auto undo = [&](int v) {
+    const auto it = std::lower_bound(moved.begin(), moved.end(), v);
+    if (it == moved.end() || *it != v) return false;
+    const std::size_t i = std::size_t(it - moved.begin());
+    if (undone[i]) return false;
+    quads.positions[std::size_t(v)] = was[i], undone[i] = 1;
+    return true;
+  };
+  const auto spoiled = [&](std::size_t k) { return before[k] > kKeepAbove && after[k] <= kKeepAbove; };
   for (bool changed = true; changed;) {
     changed = false;
     jacobian.values(around, after);
-    for (std::size_t k = 0; k < around.size(); ++k) {
-      if (!(before[k] > kKeepAbove && after[k] <= kKeepAbove)) continue;
-      for (int c : quads.quads[around[k]]) {
-        const auto it = std::lower_bound(moved.begin(), moved.end(), c);
-        if (it == moved.end() || *it != c || undone[std::size_t(it - moved.begin())]) continue;
-        const std::size_t i = std::size_t(it - moved.begin());
-        quads.positions[c] = was[i], undone[i] = 1, changed = true;
-      }
-    }
+    for (std::size_t k = 0; k < around.size(); ++k)
+      if (spoiled(k))
+        for (int c : quads.quads[around[k]]) changed = undo(c) || changed;
     // A spoiled quad none of whose own corners moved (its normals turned by a neighbour's
     // snap): undo the snaps around its corners.
-    if (!changed)
-      for (std::size_t k = 0; k < around.size() && !changed; ++k) {
-        if (!(before[k] > kKeepAbove && after[k] <= kKeepAbove)) continue;
+    for (std::size_t k = 0; k < around.size() && !changed; ++k)
+      if (spoiled(k))
         for (int c : quads.quads[around[k]])
-          for (int w : neighbours[c]) {
-            const auto it = std::lower_bound(moved.begin(), moved.end(), w);
-            if (it == moved.end() || *it != w || undone[std::size_t(it - moved.begin())]) continue;
-            const std::size_t i = std::size_t(it - moved.begin());
-            quads.positions[w] = was[i], undone[i] = 1, changed = true;
-          }
-      }
+          for (int w : neighbours[c]) changed = undo(w) || changed;
   }
   return int(std::count(undone.begin(), undone.end(), 0));
 }
