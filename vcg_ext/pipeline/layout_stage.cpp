@@ -8,6 +8,9 @@ namespace fcql {
 
 namespace {
 
+/// Invalid patches named in the log's warning; the count says how many more.
+constexpr int kInvalidPatchLines = 5;
+
 LayoutParameters layoutParameters(const PipelineParameters& p) {
   LayoutParameters l;
   l.ilpTimeLimit = p.ilpTimeLimit;
@@ -64,8 +67,19 @@ void describe(const LayoutStageResult& r, StageLog& log) {
   if (r.closingRan)
     log.info("Closing: some patches were not disks; " + std::to_string(r.closing.linesAdded) +
              " field lines added through " + std::to_string(r.closing.virtualVertices) + " regular vertices");
-  for (int i = 0; i < p.numPatches(); ++i)
-    if (!p.patches[i].valid) log.warning("Patch " + std::to_string(i) + ": " + p.patches[i].problem);
+  if (p.numInvalidPatches() > 0) {
+    // One warning, naming the first few: a layout of a ragged surface can have hundreds.
+    std::string named;
+    int count = 0;
+    for (int i = 0; i < p.numPatches(); ++i) {
+      if (p.patches[i].valid) continue;
+      if (count++ < kInvalidPatchLines)
+        named += (named.empty() ? "" : "; ") + std::string("patch ") + std::to_string(i) + ": " + p.patches[i].problem;
+    }
+    if (count > kInvalidPatchLines) named += "; and " + std::to_string(count - kInvalidPatchLines) + " more";
+    log.warning(std::to_string(count) + " layout patches are not disks with 4 corners (" + named +
+                "); the quad mesh gets irregular vertices there");
+  }
   if (!l.unresolvedPorts.empty())
     log.warning(std::to_string(l.unresolvedPorts.size()) + " ports could not be connected to the layout");
   log.info("Time: 0-1 programs " + formatSeconds(l.ilpSeconds) + ", solving cycle tracing " +
