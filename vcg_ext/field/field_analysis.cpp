@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <unordered_map>
 
 namespace fcql {
 namespace {
@@ -22,6 +23,20 @@ double signedAngle(const Vec3& from, const Vec3& to, const Vec3& normal) {
 double chartAngleOfU(const SurfaceMesh& mesh, const CrossField& field, const StarCorner& sc, double start) {
   Vec3 outgoing = mesh.edgeVector(sc.face, sc.corner);
   return start + signedAngle(outgoing, field.u[sc.face], mesh.faceNormal(sc.face));
+}
+
+/// The angle, in face f's plane, from its border edge i to the direction a border vertex's
+/// index is counted against there: the border's direction (SurfaceMesh::borderTangent) where
+/// it differs from the edge's (a zigzag border) and the field follows it more closely than the
+/// edge, else 0 (the edge's own direction). A computed field follows the border's direction; a
+/// field read from a file may follow the edges.
+double borderReference(const SurfaceMesh& mesh, const CrossField& field, int f, int i) {
+  const Vec3 e = mesh.edgeVector(f, i), t = mesh.borderTangent(f, i);
+  if (!(e.norm() > 0) || t == e) return 0;
+  const Vec3& n = mesh.faceNormal(f);
+  const double offEdge = std::abs(wrapQuarter(signedAngle(e, field.u[f], n)));
+  const double offBorder = std::abs(wrapQuarter(signedAngle(t, field.u[f], n)));
+  return offBorder < offEdge ? signedAngle(e, t, n) : 0.0;
 }
 
 }  // namespace
@@ -48,6 +63,10 @@ StarChart computeStarChart(const SurfaceMesh& mesh, const CrossField& field, int
     w.carried[k + 1] = ((int(std::lround((w.psi[k + 1] - phi) / kQuarter)) % 4) + 4) % 4;
   }
   w.flatScale = (w.loop ? 2 * kPi : kPi) / w.theta;
+  if (!w.loop) {
+    w.borderStart = borderReference(mesh, field, star[0].face, star[0].corner);
+    w.borderEnd = borderReference(mesh, field, star[n - 1].face, (star[n - 1].corner + 2) % 3);
+  }
   if (w.loop) {
     // Back to face 0, seen across the seam of the chart: its angles are shifted by Θ.
     double phi = w.psi[0] + w.theta;
@@ -214,18 +233,27 @@ int computeMatching(const SurfaceMesh& mesh, const CrossField& field, int f, int
   return ((-k) % 4 + 4) % 4;
 }
 
-std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field, int v) {
-  if (mesh.star(v).empty()) return {};
-  StarChart w = computeStarChart(mesh, field, v);
+namespace {
+
+/// Border index ×4 of the vertex whose star chart is w: (π − Θ + Σδ − m_e + m_s)/(2π), m_s and
+/// m_e the field's misalignment at the two border edges, each measured (to the nearest quarter)
+/// against the border's direction there and then taken back to the edge's, so that a field
+/// following a zigzag border's direction gives its zigzag vertices index 0.
+int borderIndexQuarters(const StarChart& w) {
+  const double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
+  const double ms = wrapQuarter(w.psi.front() - w.borderStart) + w.borderStart;
+  const double me = wrapQuarter(w.psi.back() - w.theta - w.borderEnd) + w.borderEnd;
+  return quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
+}
+
+/// The ports of the vertex whose star chart is w (see computePorts).
+std::vector<Port> portsOf(const SurfaceMesh& mesh, const CrossField& field, const StarChart& w) {
   std::vector<PortEvent> events = cancelSpurious(portEvents(w), w.theta, w.loop);
   std::sort(events.begin(), events.end(), [](const PortEvent& a, const PortEvent& b) { return a.t < b.t; });
   if (!w.loop) {
     // Keep only directions pointing into the surface: drop the ones along the border edges,
     // nearest to the two ends first, until the expected count 1 − 4·I_b remains.
-    double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
-    double ms = wrapQuarter(w.psi.front() - 0.0);
-    double me = wrapQuarter(w.psi.back() - w.theta);
-    int indexQuarters = quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
+    const int indexQuarters = borderIndexQuarters(w);
     int expected = std::max(0, 1 - indexQuarters);
     while (int(events.size()) > expected) {
       if (events.front().t <= w.theta - events.back().t) events.erase(events.begin());
@@ -233,19 +261,24 @@ std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field,
     }
   }
   std::vector<Port> ports;
-  for (const auto& e : events) ports.push_back(makePort(mesh, field, v, w, e));
+  for (const auto& e : events) ports.push_back(makePort(mesh, field, w.vertex, w, e));
   return ports;
+}
+
+}  // namespace
+
+std::vector<Port> computePorts(const SurfaceMesh& mesh, const CrossField& field, int v) {
+  if (mesh.star(v).empty()) return {};
+  return portsOf(mesh, field, computeStarChart(mesh, field, v));
 }
 
 namespace {
 
 /// Index ×4 of the vertex whose star chart is w.
 int indexQuartersOf(const StarChart& w) {
+  if (!w.loop) return borderIndexQuarters(w);
   double sumDelta = std::accumulate(w.delta.begin(), w.delta.end(), 0.0);
-  if (w.loop) return quartersFromTurn(4 * (1 + (sumDelta - w.theta) / (2 * kPi)));
-  double ms = wrapQuarter(w.psi.front() - 0.0);
-  double me = wrapQuarter(w.psi.back() - w.theta);
-  return quartersFromTurn(4 * (kPi - w.theta + sumDelta - me + ms) / (2 * kPi));
+  return quartersFromTurn(4 * (1 + (sumDelta - w.theta) / (2 * kPi)));
 }
 
 void checkFieldMatchesMesh(const SurfaceMesh& mesh, const CrossField& field) {
@@ -272,6 +305,58 @@ std::vector<int> computeVertexIndices(const SurfaceMesh& mesh, const CrossField&
   return quarters;
 }
 
+namespace {
+
+constexpr double kMisplacedSlackDeg = 30;  ///< a border quarter is misplaced this far past a straight border
+
+/// A border index of this sign does not fit a vertex with this much surface around it: a
+/// convex quarter (served by one quad) on a reflex vertex, or a concave one on a convex vertex.
+bool misplacedOnBorder(int quarters, double theta) {
+  const double slack = kMisplacedSlackDeg * kPi / 180;
+  return (quarters > 0 && theta > kPi + slack) || (quarters < 0 && theta < kPi - slack);
+}
+
+/// Where the border zigzags, the quarter of a border index falls on the convex or the reflex
+/// vertex of a tooth, as the rounding goes. A misplaced one is moved to the neighbour across
+/// its outgoing, else its incoming border edge, by counting that edge's index against its other
+/// direction (the edge's own instead of the border's, or the reverse): the two vertices' sum,
+/// and so every loop's, stays as it was. Kept only if neither vertex is then misplaced and
+/// they hold no more quarters than before.
+void placeBorderQuarters(const SurfaceMesh& mesh, std::unordered_map<int, StarChart>& charts, std::vector<int>& quarters) {
+  std::vector<int> order;
+  for (const auto& c : charts) order.push_back(c.first);
+  std::sort(order.begin(), order.end());
+  for (int v : order) {
+    StarChart& cv = charts.at(v);
+    if (!misplacedOnBorder(quarters[v], cv.theta)) continue;
+    const auto& star = mesh.star(v);
+    for (bool out : {true, false}) {
+      // The edge: v's outgoing one (to the next border vertex) or its incoming one.
+      const int f = out ? star.front().face : star.back().face;
+      const int i = out ? star.front().corner : (star.back().corner + 2) % 3;
+      const int w = out ? mesh.vertex(f, (i + 1) % 3) : mesh.vertex(f, i);
+      const auto it = charts.find(w);
+      if (it == charts.end() || w == v) continue;
+      StarChart& cw = it->second;
+      double& atV = out ? cv.borderStart : cv.borderEnd;
+      double& atW = out ? cw.borderEnd : cw.borderStart;
+      const Vec3 e = mesh.edgeVector(f, i), t = mesh.borderTangent(f, i);
+      if (t == e) continue;  // the edge is the border's direction
+      const double was = atV, other = was != 0 ? 0.0 : signedAngle(e, t, mesh.faceNormal(f));
+      atV = atW = other;
+      const int qv = borderIndexQuarters(cv), qw = borderIndexQuarters(cw);
+      if (!misplacedOnBorder(qv, cv.theta) && !misplacedOnBorder(qw, cw.theta) &&
+          std::abs(qv) + std::abs(qw) <= std::abs(quarters[v]) + std::abs(quarters[w])) {
+        quarters[v] = qv, quarters[w] = qw;
+        break;
+      }
+      atV = atW = was;
+    }
+  }
+}
+
+}  // namespace
+
 FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
   checkFieldMatchesMesh(mesh, field);
   FieldAnalysis out;
@@ -280,20 +365,24 @@ FieldAnalysis analyzeField(const SurfaceMesh& mesh, const CrossField& field) {
     for (int i = 0; i < 3; ++i) out.matching[f][i] = computeMatching(mesh, field, f, i);
   out.vertexIndexQuarters.assign(mesh.numVertices(), 0);
   out.starAngle.assign(mesh.numVertices(), 0);
+  std::unordered_map<int, StarChart> borderCharts;
   for (int v = 0; v < mesh.numVertices(); ++v) {
     if (mesh.star(v).empty()) continue;
     StarChart w = computeStarChart(mesh, field, v);
     out.starAngle[v] = w.theta;
-    int quarters = indexQuartersOf(w);
-    out.vertexIndexQuarters[v] = quarters;
-    if (quarters != 0) {
-      SingularVertex s;
-      s.vertex = v;
-      s.indexQuarters = quarters;
-      s.onBorder = !w.loop;
-      s.ports = computePorts(mesh, field, v);
-      out.singularities.push_back(std::move(s));
-    }
+    out.vertexIndexQuarters[v] = indexQuartersOf(w);
+    if (!w.loop) borderCharts.emplace(v, std::move(w));
+  }
+  placeBorderQuarters(mesh, borderCharts, out.vertexIndexQuarters);
+  for (int v = 0; v < mesh.numVertices(); ++v) {
+    if (out.vertexIndexQuarters[v] == 0) continue;
+    SingularVertex s;
+    s.vertex = v;
+    s.indexQuarters = out.vertexIndexQuarters[v];
+    const auto it = borderCharts.find(v);
+    s.onBorder = it != borderCharts.end();
+    s.ports = s.onBorder ? portsOf(mesh, field, it->second) : computePorts(mesh, field, v);
+    out.singularities.push_back(std::move(s));
   }
   return out;
 }

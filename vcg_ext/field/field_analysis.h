@@ -13,7 +13,11 @@
 // vertex gets the border index (π − Θ + Σδ − misalignment at the two border edges)/(2π),
 // rounded to a quarter, so that for a closed or a bordered surface the sum of interior and
 // border indices is the Euler characteristic (Poincaré–Hopf for a field tangent or normal to
-// the border).
+// the border). Where the border zigzags and the field follows the border's mean direction
+// rather than the edge's (SurfaceMesh::borderTangent; a zigzag edge may lie 60° off the
+// field), the misalignment is rounded against that direction, and analyzeField moves a quarter
+// that falls on a vertex of the wrong kind (convex on a reflex vertex, concave on a convex one)
+// to its neighbour along the border.
 //
 // Ports (paper §3.2): the star is flattened conformally (chart angles scaled by 2π/Θ, or π/Θ at
 // the border); a port is a direction t around the vertex where the field is radial, i.e. the
@@ -84,6 +88,9 @@ struct StarChart {
   double theta = 0;           ///< total angle Θ
   double flatScale = 1;       ///< 2π/Θ (interior) or π/Θ (border)
   bool loop = false;          ///< interior vertex
+  /// Border vertex: the angles from its outgoing and its incoming border edge to the border
+  /// direction its index is counted against there (0: the edge's own; see computeStarChart).
+  double borderStart = 0, borderEnd = 0;
 
   /// Chart angle of a vector tangent to star face k.
   double chartAngleOf(const SurfaceMesh& mesh, int k, const Vec3& direction) const;

@@ -555,7 +555,9 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
       }
     }
     if (best >= 0) {
-      z[f] = std::polar(1.0, 4 * angleInFrame(mesh, f, mesh.edgeVector(f, best)));
+      // A border edge: the border's direction there (its own, unless the border zigzags).
+      const Vec3 along = mesh.isBorderEdge(f, best) ? mesh.borderTangent(f, best) : mesh.edgeVector(f, best);
+      z[f] = std::polar(1.0, 4 * angleInFrame(mesh, f, along));
       ++numFixed;
     } else {
       unknown[f] = n++;

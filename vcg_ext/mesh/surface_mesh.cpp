@@ -1,5 +1,6 @@
 #include "mesh/surface_mesh.h"
 
+#include "mesh/border_tangents.h"
 #include "util/union_find.h"
 
 #include <algorithm>
@@ -295,6 +296,14 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
   numComponents_ = t.numComponents;
   numBorderLoops_ = t.numBorderLoops;
   genus_ = t.genus;
+  if (numBorderLoops_ > 0) zigzagBorder_ = zigzagBorderTangents(*this, kBorderTangentReach * boundingBoxDiagonal());
+}
+
+Vec3 SurfaceMesh::borderTangent(int f, int i) const {
+  if (!isBorderEdge(f, i)) return Vec3::Zero();
+  const auto it = zigzagBorder_.find(edgeId(f, i));
+  if (it != zigzagBorder_.end()) return it->second;
+  return edgeVector(f, i);
 }
 
 int SurfaceMesh::eulerCharacteristic() const { return numUsedVertices_ - numEdges_ + numFaces(); }

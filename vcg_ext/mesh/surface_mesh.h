@@ -17,6 +17,7 @@
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace fcql {
@@ -77,6 +78,12 @@ public:
     return positions_[faces_[f][(i + 1) % 3]] - positions_[faces_[f][i]];
   }
 
+  /// The border's direction at border edge i of face f, at the scale of a default quad
+  /// (mesh/border_tangents.h): the edge vector itself (bit for bit, as edgeVector), or where
+  /// the border zigzags from triangle to triangle, the border's mean direction there as a unit
+  /// vector. Zero for an interior edge.
+  Vec3 borderTangent(int f, int i) const;
+
   bool isBorderVertex(int v) const { return borderVertex_[v]; }
   /// Faces around v in counter-clockwise order (about the outward normal). For a border
   /// vertex the fan starts at the face whose edge leaving v... is on the border: star[0]'s
@@ -104,6 +111,7 @@ private:
   std::vector<double> areas_;
   std::vector<char> borderVertex_;
   std::vector<std::vector<StarCorner>> stars_;
+  std::unordered_map<int, Vec3> zigzagBorder_;  ///< edge id → the border's direction (borderTangent)
   int numEdges_ = 0, numBorderLoops_ = 0, numComponents_ = 0, genus_ = 0, numUsedVertices_ = 0;
   double meanEdgeLength_ = 0;
 };
