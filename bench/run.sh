@@ -270,56 +270,57 @@ done
   with holes) all give pure-quad, manifold meshes within 1%; a seventh, kitten with five
   zero-area triangles, is refused with a message naming the first.
 
-## Borders that zigzag (holes cut into scans): measured, a fix tried and not kept; the dragon's quad stage timed (issues 20 and 21, twenty-third session, 2026-12-07)
+## Borders that zigzag (holes cut into scans) followed in their mean direction; the dragon's quad stage timed (issues 20 and 21, twenty-third session, 2026-12-07)
 
-Same machine. No output of the shared meshes changed this session (a log message and a
-refactoring landed), so the table above is still the run of the twenty-second session.
+Same machine. The shared meshes' output is unchanged (camelhead, aqua_center and lilium, the
+ones with borders, give byte-identical quad.obj; the others have no border), so the table above
+is still the run of the twenty-second session.
 
 - **Holes cut into the shared meshes.** Faces whose centroid lies within 1–3% of the diagonal
   of a few random points were removed (numpy, fixed seeds): each hole's border then zigzags from
-  triangle to triangle, as the border of a hole in a scan does. `fcql run` at its defaults:
+  triangle to triangle, as the border of a hole in a scan does. `fcql run` at its defaults,
+  before → after (S: interior singularities; border S; invalid: patches that are not 4-cornered
+  disks; BC: base-complex patches; mis.: quads more than π/16 off the field):
 
-  mesh (holes) | S | border S | patches | t-j | invalid | quads | BC | mis. % | folds
-  ---|---:|---:|---:|---:|---:|---:|---:|---:|---:
-  bunny (12) | 49 | 163 | 1544 | 3 | 8 | 7215 | 2176 | 9.4 | 0
-  bunny (8, another seed) | 39 | 110 | 754 | 2 | 7 | 4992 | 964 | 12.0 | 0
-  bunny (10, a third seed) | 38 | 132 | 1021 | 7 | 7 | 20315 | 1495 | 8.6 | 0
-  fertility (8) | 47 | 79 | 627 | 1 | 0 | 8240 | 654 | 11.2 | 0
-  rockerarm (8) | 29 | 83 | 449 | 5 | 2 | 8233 | 669 | 13.7 | 3
-  joint (8) | 32 | 75 | 571 | 1 | 1 | 10736 | 912 | 6.1 | 0
-  fandisk (6) | 37 | 43 | 398 | 0 | 0 | 5198 | 398 | 8.5 | 0
-  kitten (6) | 18 | 29 | 228 | 0 | 0 | 20894 | 228 | 8.6 | 0
+  mesh (holes) | S | border S | patches | t-j | invalid | BC | irr. | mis. % | folds
+  ---|---|---|---|---|---|---|---|---|---
+  bunny (12) | 49 → 45 | 163 → 63 | 1544 → 575 | 3 → 2 | 8 → 10 | 2176 → 1548 | 158 → 103 | 9.4 → 14.9 | 0 → 0
+  bunny (8, another seed) | 39 → 37 | 110 → 48 | 754 → 356 | 2 → 0 | 7 → 9 | 964 → 721 | 112 → 78 | 12.0 → 8.4 | 0 → 0
+  bunny (10, a third seed) | 38 → 35 | 132 → 84 | 1021 → 660 | 7 → 1 | 7 → 11 | 1495 → 1261 | 129 → 103 | 8.6 → 15.6 | 0 → 0
+  fertility (8) | 47 → 47 | 79 → 45 | 627 → 346 | 1 → 1 | 0 → 0 | 654 → 380 | 106 → 86 | 11.2 → 7.5 | 0 → 0
+  rockerarm (8) | 29 → 32 | 83 → 49 | 449 → 306 | 5 → 5 | 2 → 9 | 669 → 856 | 87 → 82 | 13.7 → 26.4 | 3 → 0
+  joint (8) | 32 → 35 | 75 → 66 | 571 → 494 | 1 → 2 | 1 → 1 | 912 → 528 | 87 → 85 | 6.1 → 7.7 | 0 → 0
+  fandisk (6), kitten (6) | unchanged: their border edges are longer than half a quad | | | | | | | |
 
-  All exit 0, pure quads of the right genus and border loops, within the distance bound. But
-  the bunny's layout has 24 times the patches of the closed bunny (64), most of them slivers
-  along the holes. Cause: a computed field is constrained to each border edge, and the edges
-  of a zigzag turn by about 60° at every vertex; the analysis then finds a border singularity
-  at nearly every turn. A flat sheet of equilateral triangles (23K faces) whose two sides
-  zigzag gets 232 border singularities and 4 interior ones, where its 4 corners suffice.
-  (Holes that touch leave a non-manifold vertex: `fcql` refuses the mesh and names the vertex.)
-- **Tried: the border's mean direction instead of each edge's.** Along each border loop, an
-  edge shorter than half a quad and more than 15° off the border's mean direction around it
-  (length-weighted over up to 2% of the diagonal each way, a symmetric window that stops at
-  corners of the border: a turn of the chords over three mean edges above 45°, the largest
-  nearby) took that mean direction as its constraint; the analysis rounded a border vertex's
-  index against that direction where the field follows it more closely than the edge (a field
-  read from a file, following the edges, is counted as before; the sum over a loop does not
-  depend on the choice). The sheet: 4 border singularities and none inside. Camelhead,
-  aqua_center and lilium gave byte-identical output; fandisk and kitten with holes too (their
-  border edges are longer than half a quad). Edges as long as a quad had to be left alone:
-  averaged, the camelhead's notched border lost 5 of its 8 border singularities and its quads
-  needed 121K quads (22K) to stay within the distance bound, the notches' tips no longer
-  corners. With holes, before → after: the bunnies 1544 → 575, 754 → 340 and 1021 → 678
-  patches (border singularities 163 → 64, 110 → 50, 132 → 84; base complex 2176 → 1412,
-  964 → 649, 1495 → 1673); fertility 627 → 346 patches, base complex 654 → 380, 11.2% → 7.5%
-  misaligned; joint 571 → 494, base complex 912 → 528; rockerarm 449 → 306 patches and 3 → 0
-  folds but 13.7% → 26.4% misaligned and 2 → 9 invalid patches. And all three bunnies
-  got a folded quad, none before (scaled Jacobian down to −0.76): a +1/4 border singularity,
-  which the quad mesh serves with a single quad, landed on a reflex vertex of a tooth (315° of
-  surface around it), a corner no quad can fill. Which vertex of a tooth takes a border
-  index's quarter depends on where the rounding falls, convex or reflex. Not kept. What it
-  needs: choosing, per border edge, which direction the index is rounded against, so that
-  convex quarters land on convex vertices and concave ones on reflex vertices.
+  Before, the bunny's layout had 24 times the patches of the closed bunny (64), most of them
+  slivers along the holes. Cause: a computed field was constrained to each border edge, and
+  the edges of a zigzag turn by about 60° at every vertex; the analysis then found a border
+  singularity at nearly every turn. A flat sheet of equilateral triangles (23K faces) whose two
+  sides zigzag had 232 border singularities and 4 interior ones, where its 4 corners suffice;
+  with a hole of 3 edges' radius cut into it, 256 and 6. All runs exit 0 with pure quads of the
+  right genus and borders within the distance bound, before and after. (Holes that touch leave a
+  non-manifold vertex: `fcql` refuses the mesh and names the vertex.)
+- **The change** (`mesh/border_tangents.h`, `SurfaceMesh::borderTangent`, the field's border
+  constraints, `field_analysis.cpp`). Along each border loop, an edge shorter than half a quad
+  and more than 15° off the border's mean direction around it (length-weighted over up to 2% of
+  the diagonal each way, a symmetric window that stops at corners of the border: a turn of the
+  chords over three mean edges above 45°, the largest nearby) is constrained to that mean
+  direction. The analysis rounds a border vertex's index against that direction where the field
+  follows it more closely than the edge (a field read from a file, following the edges, is
+  counted as before; the sum over a loop does not depend on the choice). Where the quarter then
+  falls on a vertex of the wrong kind (+1/4, served by one quad, on a reflex vertex with more
+  than 210° of surface; −1/4 on a convex one under 150°), it is moved to the neighbour across
+  one of its border edges by rounding that edge against its other direction, if that places both
+  well and adds no quarter. Without that last step all three bunnies got a folded quad (scaled
+  Jacobian down to −0.76): a convex quarter on a reflex vertex of 315°. The sheet: 4 border
+  singularities and none inside; with the hole, 8 (its 4 and the corners). Edges as long as a
+  quad are left alone: averaged, the camelhead's notched border lost 5 of its 8 border
+  singularities and needed 121K quads (22K) to stay within the distance bound, its notches' tips
+  no longer patch corners. The cost: the quads along a zigzag border follow the border's polyline,
+  the field its mean direction, and the quads within a quad of the bunny's holes are more often
+  misaligned (19.5% → 26.8% of those faces); the rockerarm with holes has 9 invalid patches
+  (slivers of 1–10 triangles at teeth of its holes, cut as n-gons) and 26.4% of its quads off
+  the field. Both are left open.
 - **The dragon's quad stage, timed** (bench α and k, 20.7 s in that run): the side-length counts
   4.6 s; the first pass 1.0 s of sampling and 6.0 s of smoothing; the patch-wise fallback pass
   2.4 s; the fold repair 7.2 s over all passes, by ring level (parts kept / tried): 1 ring
