@@ -77,7 +77,7 @@ TEST(BorderTangents, SmoothBordersKeepTheirEdgesDirections) {
   // Two circles of 48 edges, turning by 7.5° at each vertex the same way.
   const SurfaceMesh cylinder = makeOpenCylinder(0.5, 2.0, 48, 32, GridDiagonal::Same);
   EXPECT_TRUE(zigzagBorderTangents(cylinder, kBorderTangentReach * cylinder.boundingBoxDiagonal()).empty());
-  // A closed mesh has no border; a reach of 0 lists nothing.
+  // A reach of 0 lists nothing, even where the border zigzags.
   EXPECT_TRUE(zigzagBorderTangents(zigzagSheet(100, 116), 0).empty());
 }
 
