@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 namespace fcql {
@@ -25,18 +26,39 @@ double chartAngleOfU(const SurfaceMesh& mesh, const CrossField& field, const Sta
   return start + signedAngle(outgoing, field.u[sc.face], mesh.faceNormal(sc.face));
 }
 
-/// The angle, in face f's plane, from its border edge i to the direction a border vertex's
-/// index is counted against there: the border's direction (SurfaceMesh::borderTangent) where
-/// it differs from the edge's (a zigzag border) and the field follows it more closely than the
-/// edge, else 0 (the edge's own direction). A computed field follows the border's direction; a
-/// field read from a file may follow the edges.
-double borderReference(const SurfaceMesh& mesh, const CrossField& field, int f, int i) {
-  const Vec3 e = mesh.edgeVector(f, i), t = mesh.borderTangent(f, i);
-  if (!(e.norm() > 0) || t == e) return 0;
-  const Vec3& n = mesh.faceNormal(f);
-  const double offEdge = std::abs(wrapQuarter(signedAngle(e, field.u[f], n)));
-  const double offBorder = std::abs(wrapQuarter(signedAngle(t, field.u[f], n)));
-  return offBorder < offEdge ? signedAngle(e, t, n) : 0.0;
+/// A border edge: corner i of face f (from vertex i to vertex i + 1).
+struct BorderEdge {
+  int face, corner;
+};
+
+/// Border vertex v's outgoing border edge (to the next vertex along the border: its star's
+/// first face) or its incoming one (from the previous vertex: its star's last face).
+BorderEdge borderEdgeAt(const SurfaceMesh& mesh, int v, bool outgoing) {
+  const auto& star = mesh.star(v);
+  return outgoing ? BorderEdge{star.front().face, star.front().corner}
+                  : BorderEdge{star.back().face, (star.back().corner + 2) % 3};
+}
+
+/// The angle, in the edge's face, from a border edge to the border's direction there
+/// (SurfaceMesh::borderTangent), or nothing where the edge is that direction (no zigzag).
+std::optional<double> zigzagTurn(const SurfaceMesh& mesh, BorderEdge b) {
+  const Vec3 e = mesh.edgeVector(b.face, b.corner), t = mesh.borderTangent(b.face, b.corner);
+  if (!(e.norm() > 0) || t == e) return std::nullopt;
+  return signedAngle(e, t, mesh.faceNormal(b.face));
+}
+
+/// The angle, in the face's plane, from border edge b to the direction a border vertex's index
+/// is counted against there: the border's direction where it differs from the edge's (a zigzag
+/// border) and the field follows it more closely than the edge, else 0 (the edge's own
+/// direction). A computed field follows the border's direction; a field read from a file may
+/// follow the edges.
+double borderReference(const SurfaceMesh& mesh, const CrossField& field, BorderEdge b) {
+  const std::optional<double> turn = zigzagTurn(mesh, b);
+  if (!turn) return 0;
+  const Vec3& n = mesh.faceNormal(b.face);
+  const double offEdge = std::abs(wrapQuarter(signedAngle(mesh.edgeVector(b.face, b.corner), field.u[b.face], n)));
+  const double offBorder = std::abs(wrapQuarter(signedAngle(mesh.borderTangent(b.face, b.corner), field.u[b.face], n)));
+  return offBorder < offEdge ? *turn : 0.0;
 }
 
 }  // namespace
@@ -64,8 +86,8 @@ StarChart computeStarChart(const SurfaceMesh& mesh, const CrossField& field, int
   }
   w.flatScale = (w.loop ? 2 * kPi : kPi) / w.theta;
   if (!w.loop) {
-    w.borderStart = borderReference(mesh, field, star[0].face, star[0].corner);
-    w.borderEnd = borderReference(mesh, field, star[n - 1].face, (star[n - 1].corner + 2) % 3);
+    w.borderStart = borderReference(mesh, field, borderEdgeAt(mesh, v, true));
+    w.borderEnd = borderReference(mesh, field, borderEdgeAt(mesh, v, false));
   }
   if (w.loop) {
     // Back to face 0, seen across the seam of the chart: its angles are shifted by Θ.
@@ -329,20 +351,17 @@ void placeBorderQuarters(const SurfaceMesh& mesh, std::unordered_map<int, StarCh
   for (int v : order) {
     StarChart& cv = charts.at(v);
     if (!misplacedOnBorder(quarters[v], cv.theta)) continue;
-    const auto& star = mesh.star(v);
     for (bool out : {true, false}) {
-      // The edge: v's outgoing one (to the next border vertex) or its incoming one.
-      const int f = out ? star.front().face : star.back().face;
-      const int i = out ? star.front().corner : (star.back().corner + 2) % 3;
-      const int w = out ? mesh.vertex(f, (i + 1) % 3) : mesh.vertex(f, i);
+      const BorderEdge b = borderEdgeAt(mesh, v, out);
+      const int w = out ? mesh.vertex(b.face, (b.corner + 1) % 3) : mesh.vertex(b.face, b.corner);
       const auto it = charts.find(w);
       if (it == charts.end() || w == v) continue;
+      const std::optional<double> turn = zigzagTurn(mesh, b);
+      if (!turn) continue;  // the edge is the border's direction
       StarChart& cw = it->second;
       double& atV = out ? cv.borderStart : cv.borderEnd;
       double& atW = out ? cw.borderEnd : cw.borderStart;
-      const Vec3 e = mesh.edgeVector(f, i), t = mesh.borderTangent(f, i);
-      if (t == e) continue;  // the edge is the border's direction
-      const double was = atV, other = was != 0 ? 0.0 : signedAngle(e, t, mesh.faceNormal(f));
+      const double was = atV, other = was != 0 ? 0.0 : *turn;
       atV = atW = other;
       const int qv = borderIndexQuarters(cv), qw = borderIndexQuarters(cw);
       if (!misplacedOnBorder(qv, cv.theta) && !misplacedOnBorder(qw, cw.theta) &&

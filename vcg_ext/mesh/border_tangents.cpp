@@ -15,47 +15,18 @@ constexpr double kCornerEdges = 3;       ///< rc is at least this many of the lo
 constexpr double kLoopReaches = 12;      ///< a loop is at least this many reaches long, or the reach shrinks
 constexpr double kCornerShare = 6;       ///< rc is at most the loop's length over this
 
-struct BorderEdge {
-  int face, edge;
-};
-
-/// The border loops, each as its edges in order (each from its start vertex to the next).
-std::vector<std::vector<BorderEdge>> borderLoops(const SurfaceMesh& mesh) {
-  std::unordered_map<int, BorderEdge> leaving;  // start vertex → its border edge
-  for (int f = 0; f < mesh.numFaces(); ++f)
-    for (int i = 0; i < 3; ++i)
-      if (mesh.isBorderEdge(f, i)) leaving.emplace(mesh.vertex(f, i), BorderEdge{f, i});
-  std::vector<std::vector<BorderEdge>> loops;
-  std::vector<char> used(static_cast<std::size_t>(mesh.numEdges()), 0);
-  for (int f = 0; f < mesh.numFaces(); ++f)
-    for (int i = 0; i < 3; ++i) {
-      if (!mesh.isBorderEdge(f, i) || used[std::size_t(mesh.edgeId(f, i))]) continue;
-      std::vector<BorderEdge> loop;
-      BorderEdge e{f, i};
-      while (!used[std::size_t(mesh.edgeId(e.face, e.edge))]) {
-        used[std::size_t(mesh.edgeId(e.face, e.edge))] = 1;
-        loop.push_back(e);
-        const auto it = leaving.find(mesh.vertex(e.face, (e.edge + 1) % 3));
-        if (it == leaving.end()) break;  // not on a manifold mesh: each border vertex starts one
-        e = it->second;
-      }
-      loops.push_back(std::move(loop));
-    }
-  return loops;
-}
-
 /// The tangents of one loop's zigzag edges into `out`.
-void loopTangents(const SurfaceMesh& mesh, const std::vector<BorderEdge>& loop, double reach,
+void loopTangents(const SurfaceMesh& mesh, const std::vector<StarCorner>& loop, double reach,
                   std::unordered_map<int, Vec3>& out) {
   const int m = int(loop.size());
   if (m < 3) return;
   std::vector<Vec3> along, start;
   std::vector<double> length;
   double total = 0;
-  for (const BorderEdge& e : loop) {
-    along.push_back(mesh.edgeVector(e.face, e.edge));
+  for (const StarCorner& e : loop) {
+    along.push_back(mesh.edgeVector(e.face, e.corner));
     length.push_back(along.back().norm());
-    start.push_back(mesh.position(mesh.vertex(e.face, e.edge)));
+    start.push_back(mesh.position(mesh.vertex(e.face, e.corner)));
     total += length.back();
   }
   const double r = std::min(reach, total / kLoopReaches);
@@ -110,7 +81,7 @@ void loopTangents(const SurfaceMesh& mesh, const std::vector<BorderEdge>& loop, 
     if (!(sum.norm() > 0)) continue;
     const Vec3 mean = sum.normalized();
     if ((along[std::size_t(k)] / length[std::size_t(k)]).dot(mean) < cosJagged)
-      out[mesh.edgeId(loop[std::size_t(k)].face, loop[std::size_t(k)].edge)] = mean;
+      out[mesh.edgeId(loop[std::size_t(k)].face, loop[std::size_t(k)].corner)] = mean;
   }
 }
 
@@ -119,7 +90,7 @@ void loopTangents(const SurfaceMesh& mesh, const std::vector<BorderEdge>& loop, 
 std::unordered_map<int, Vec3> zigzagBorderTangents(const SurfaceMesh& mesh, double reach) {
   std::unordered_map<int, Vec3> out;
   if (!(reach > 0)) return out;
-  for (const auto& loop : borderLoops(mesh)) loopTangents(mesh, loop, reach, out);
+  for (const auto& loop : mesh.borderLoops()) loopTangents(mesh, loop, reach, out);
   return out;
 }
 

@@ -229,7 +229,8 @@ int buildStars(int nv, const HalfEdgesByOrigin& halfEdges, const std::vector<std
 }
 
 struct Topology {
-  int numComponents = 0, numBorderLoops = 0, genus = 0;
+  int numComponents = 0, genus = 0;
+  std::vector<std::vector<StarCorner>> borderLoops;
 };
 
 /// Step 6: components, border loops, genus.
@@ -256,22 +257,21 @@ Topology topology(const std::vector<std::array<int, 3>>& faces, int nv, const st
   }
   for (int v = 0; v < nv; ++v)
     if (!stars[v].empty()) compV[componentOf[uf.find(stars[v][0].face)]] += 1;
-  // Border loops: follow border half-edges; each border vertex has exactly one outgoing one.
-  std::vector<int> nextBorder(nv, -1);
-  std::vector<int> borderFaceOf(nv, -1);
-  for (int f = 0; f < nf; ++f)
-    for (int i = 0; i < 3; ++i)
-      if (adjFace[f][i] < 0) {
-        nextBorder[faces[f][i]] = faces[f][(i + 1) % 3];
-        borderFaceOf[faces[f][i]] = f;
-      }
+  // Border loops, from the first border edge in face order not yet walked: each border vertex
+  // has exactly one outgoing border edge, its star's first face's edge from it (buildStars).
   std::vector<char> visited(nv, 0);
-  for (int v = 0; v < nv; ++v) {
-    if (nextBorder[v] < 0 || visited[v]) continue;
-    ++result.numBorderLoops;
-    compLoops[componentOf[uf.find(borderFaceOf[v])]] += 1;
-    for (int w = v; w >= 0 && !visited[w]; w = nextBorder[w]) visited[w] = 1;
-  }
+  for (int f = 0; f < nf; ++f)
+    for (int i = 0; i < 3; ++i) {
+      if (adjFace[f][i] >= 0 || visited[faces[f][i]]) continue;
+      compLoops[componentOf[uf.find(f)]] += 1;
+      std::vector<StarCorner> loop;
+      for (StarCorner e{f, i}; !visited[faces[e.face][e.corner]];) {
+        visited[faces[e.face][e.corner]] = 1;
+        loop.push_back(e);
+        e = stars[faces[e.face][(e.corner + 1) % 3]].front();
+      }
+      result.borderLoops.push_back(std::move(loop));
+    }
   for (int c = 0; c < numComponents; ++c) {
     long chi = compV[c] - compE[c] + compF[c];
     result.genus += int((2 - chi - compLoops[c]) / 2);
@@ -292,11 +292,11 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<std::array<int
     meanEdgeLength_ = edgeLengthSum / (3.0 * numFaces());
     numUsedVertices_ = buildStars(numVertices(), halfEdges, adjFace_, adjEdge_, stars_, borderVertex_);
   }
-  const Topology t = topology(faces_, numVertices(), adjFace_, stars_);
+  Topology t = topology(faces_, numVertices(), adjFace_, stars_);
   numComponents_ = t.numComponents;
-  numBorderLoops_ = t.numBorderLoops;
+  borderLoops_ = std::move(t.borderLoops);
   genus_ = t.genus;
-  if (numBorderLoops_ > 0) zigzagBorder_ = zigzagBorderTangents(*this, kBorderTangentReach * boundingBoxDiagonal());
+  if (!borderLoops_.empty()) zigzagBorder_ = zigzagBorderTangents(*this, kBorderTangentReach * boundingBoxDiagonal());
 }
 
 Vec3 SurfaceMesh::borderTangent(int f, int i) const {

@@ -93,7 +93,11 @@ public:
 
   /// Number of connected border loops, connected components, and Euler characteristic V-E+F
   /// (vertices counted only if referenced).
-  int numBorderLoops() const { return numBorderLoops_; }
+  int numBorderLoops() const { return int(borderLoops_.size()); }
+  /// The border loops, each as its border edges in order along the border (an edge as the
+  /// corner of its face it leaves: edge `corner`, from that vertex to the next), each loop
+  /// starting at its first border edge in face order.
+  const std::vector<std::vector<StarCorner>>& borderLoops() const { return borderLoops_; }
   int numComponents() const { return numComponents_; }
   int eulerCharacteristic() const;
   /// Genus of a connected mesh: (2 - χ - borderLoops) / 2; for several components, the sum of
@@ -112,7 +116,8 @@ private:
   std::vector<char> borderVertex_;
   std::vector<std::vector<StarCorner>> stars_;
   std::unordered_map<int, Vec3> zigzagBorder_;  ///< edge id → the border's direction (borderTangent)
-  int numEdges_ = 0, numBorderLoops_ = 0, numComponents_ = 0, genus_ = 0, numUsedVertices_ = 0;
+  std::vector<std::vector<StarCorner>> borderLoops_;
+  int numEdges_ = 0, numComponents_ = 0, genus_ = 0, numUsedVertices_ = 0;
   double meanEdgeLength_ = 0;
 };
 
