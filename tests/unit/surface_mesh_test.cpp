@@ -1,8 +1,11 @@
 #include "mesh/surface_mesh.h"
 
+#include "mesh/generators.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 using namespace fcql;
 
@@ -88,6 +91,29 @@ TEST(SurfaceMesh, StarsAreCounterClockwiseFans) {
   EXPECT_EQ(m.genus(), 0);
 }
 
+TEST(SurfaceMesh, BorderLoopsAreClosedWalksOfEveryBorderEdge) {
+  // An open cylinder of 48 × 32 quads: two border circles of 48 edges each.
+  SurfaceMesh m = makeOpenCylinder(0.5, 2.0, 48, 32);
+  ASSERT_EQ(m.numBorderLoops(), 2);
+  std::set<int> walked;
+  for (const auto& loop : m.borderLoops()) {
+    ASSERT_EQ(loop.size(), 48u);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const StarCorner& e = loop[k];
+      const StarCorner& next = loop[(k + 1) % loop.size()];
+      EXPECT_TRUE(m.isBorderEdge(e.face, e.corner));
+      EXPECT_TRUE(walked.insert(m.edgeId(e.face, e.corner)).second) << "a border edge walked twice";
+      // Each edge ends where the next one starts; the last one where the loop began.
+      EXPECT_EQ(m.vertex(e.face, (e.corner + 1) % 3), m.vertex(next.face, next.corner));
+    }
+  }
+  int borderEdges = 0;
+  for (int f = 0; f < m.numFaces(); ++f)
+    for (int i = 0; i < 3; ++i) borderEdges += m.isBorderEdge(f, i);
+  EXPECT_EQ(int(walked.size()), borderEdges);
+  EXPECT_TRUE(makeTorus().borderLoops().empty());
+}
+
 TEST(SurfaceMesh, RejectsBadInputWithClearMessages) {
   std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
   EXPECT_NE(errorOf(p, {}).find("no faces"), std::string::npos);
@@ -114,7 +140,6 @@ TEST(SurfaceMesh, UnreferencedVerticesDoNotCount) {
   EXPECT_TRUE(m.star(4).empty());
 }
 
-#include "mesh/generators.h"
 #include "mesh/vertex_welding.h"
 
 TEST(VertexWelding, AnUnweldedMeshGetsItsSurfaceBack) {
