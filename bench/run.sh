@@ -73,6 +73,7 @@ machine="$(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /pro
   echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|"
 } > "$out/results.md"
 failures=() pictures=()
+declare -A run_alpha run_k  # each mesh's α and k, for its noise rows
 
 for name in "${names[@]}"; do
   mesh="$shared/$name.obj"
@@ -90,6 +91,7 @@ for name in "${names[@]}"; do
     dragon) view=(--up z) ;;
     fandisk) view=(--azimuth 120 --elevation 30) ;;
   esac
+  run_alpha[$name]=$alpha run_k[$name]=$k
   field=()
   [ -f "$shared/$name.ffield" ] && field=(--field "$shared/$name.ffield")
   args=("$mesh" "${field[@]}" --alpha "$alpha" --k "$k" --phi 10 --out "$out/$name" --quiet)
@@ -149,10 +151,55 @@ for name in "${names[@]}"; do
   fi
 done
 
+# Noise rows (issue 20): Gaussian noise of 0.05% of the bounding-box diagonal on the vertices of
+# bunny, fertility and kitten (bench/noise.py, seeds 1-3), `fcql run` with the mesh's α and k
+# and a computed field; the singularities are compared with the same mesh's row above.
+noise_names=()
+for name in bunny fertility kitten; do
+  [ -f "$out/$name/stats.json" ] && noise_names+=("$name")
+done
+if [ ${#noise_names[@]} -gt 0 ]; then
+  {
+    echo
+    echo "Noise: Gaussian, σ = 0.05% of the bounding-box diagonal on every vertex coordinate (\`bench/noise.py\`,"
+    echo "seeds 1–3), \`fcql run\` with the row's α and k; S change: against the mesh without noise above (issue 20:"
+    echo "at most 10%, and the layout stays conforming: 0 t-junctions, 0 dangling ports)."
+    echo
+    echo "| mesh | seed | S without → with noise | S change % | patches | t-j | dangling | invalid | quads | irr. | BC | mis. % | SJ min / mean | Hd % |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  } > "$out/noise.md"
+  for name in "${noise_names[@]}"; do
+    s0=$(value "$out/$name/stats.json" field singularities)
+    for seed in 1 2 3; do
+      noisy="$out/$name-noise$seed"
+      echo "bench: $name with noise, seed $seed (alpha ${run_alpha[$name]}, k ${run_k[$name]})" >&2
+      python3 "$here/bench/noise.py" "$shared/$name.obj" 0.0005 "$seed" "$noisy.obj"
+      rm -rf "$noisy"
+      if ! timeout "$limit" "$fcql" run "$noisy.obj" --alpha "${run_alpha[$name]}" --k "${run_k[$name]}" --phi 10 \
+          --out "$noisy" --quiet 2>"$noisy.err"; then
+        echo "| $name | $seed | $s0 | failed: $(tail -1 "$noisy.err" | sed 's/^fcql: error: //; s/|/\\|/g') |" >> "$out/noise.md"
+        failures+=("$name (noise, seed $seed)")
+        continue
+      fi
+      ns="$noisy/stats.json"
+      s1=$(value "$ns" field singularities)
+      hd=$(value "$ns" quad hausdorff_rel)
+      printf '| %s | %s | %s → %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s |\n' \
+        "$name" "$seed" "$s0" "$s1" "$(awk -v a="$s0" -v b="$s1" 'BEGIN { printf "%+.0f", 100 * (b - a) / a }')" \
+        "$(value "$ns" layout patches)" "$(value "$ns" layout t_junctions)" "$(value "$ns" layout dangling_ports)" \
+        "$(value "$ns" layout invalid_patches)" "$(value "$ns" quad faces)" "$(value "$ns" quad irregular_vertices)" \
+        "$(value "$ns" quad base_complex_patches)" "$(fmt %.1f "$(value "$ns" quad misaligned_pct)")" \
+        "$(fmt %.2f "$(value "$ns" quad min_scaled_jacobian)")" "$(fmt %.2f "$(value "$ns" quad mean_scaled_jacobian)")" \
+        "$(awk -v h="$hd" 'BEGIN { printf "%.2f", 100 * h }')" >> "$out/noise.md"
+    done
+  done
+fi
+
 {
+  if [ -f "$out/noise.md" ]; then cat "$out/noise.md"; fi
   if [ ${#failures[@]} -gt 0 ]; then
     echo
-    echo "Failed in \`fcql run\`: ${failures[*]} (reason in the row; the layout figures then come from \`fcql layout\`)."
+    echo "Failed in \`fcql run\`: ${failures[*]} (reason in the row; the layout figures then come from \`fcql layout\`, not for the noise rows)."
   fi
   cat <<'NOTES'
 
