@@ -37,7 +37,7 @@ quad_value() { section_value "$1" quad "$2"; }
 # separatrix and the folds left get more rounds of mean-value patches (2026-12-06), 10 and 9.
 # Since the last fold repair may move corners held on the scan's feature lines (2026-12-06,
 # eighteenth session), 0 at 0.02 and 5 at 0.01, all of those with every corner free to move;
-# 4 at 0.01 since the twenty-second session (measured 2026-12-07).
+# 4 at 0.01 in the twenty-fourth session's run (2026-12-07).
 known_folds="dragon@0.01=4"
 
 # Runs that may fail in the zero-chain rounds: MESH@SCALE. Such a failure is reported, not
