@@ -363,6 +363,48 @@ TEST(FieldGeneration, PairOnTheTwoEndsOfAnEdgeIsCancelled) {
   EXPECT_GE(made, 2) << "no turn of a single cross made a pair: the test checks nothing";
 }
 
+// A +1/4 and a −1/4 four edges apart on a flat sheet (a field turning by a quarter around each,
+// as noise leaves on a scan): closer than the reach, the smoothest field around them takes both
+// away and changes nothing far from them; farther, or with the faces around them fixed, they stay.
+TEST(FieldGeneration, CloseOppositeQuartersAreCancelled) {
+  const int n = 40;  // edges of 1/40
+  const SurfaceMesh m = gridSurface(n, n, false, false, [](double s, double t) { return Vec3(s, t, 0); });
+  const Vec3 a(0.4507, 0.5031, 0), b(0.5493, 0.4969, 0), middle = (a + b) / 2;
+  CrossField field;
+  for (int f = 0; f < m.numFaces(); ++f) {
+    const Vec3 p = m.faceCentroid(f);
+    const double phi = (std::atan2(p.y() - a.y(), p.x() - a.x()) - std::atan2(p.y() - b.y(), p.x() - b.x())) / 4;
+    field.u.push_back(Vec3(std::cos(phi), std::sin(phi), 0));
+  }
+  const FieldAnalysis before = analyzeField(m, field);
+  ASSERT_EQ(before.numInteriorSingularities(), 2);
+  std::vector<int> inside;
+  for (const SingularVertex& s : before.singularities)
+    if (!s.onBorder) inside.push_back(s.indexQuarters);
+  ASSERT_EQ(inside[0] * inside[1], -1) << "not one +1/4 and one -1/4";
+  const std::vector<std::array<double, 3>> levi(m.numFaces(), {0.0, 0.0, 0.0});  // flat: no correction
+
+  CrossField far = field;
+  EXPECT_EQ(cancelCloseSingularityPairs(m, far, 0.05, levi), 0) << "the pair is 0.1 apart, the reach 0.05";
+  EXPECT_EQ(analyzeField(m, far).numInteriorSingularities(), 2);
+
+  std::vector<char> fixed(m.numFaces(), 0);
+  for (int f = 0; f < m.numFaces(); ++f) fixed[f] = (m.faceCentroid(f) - middle).norm() < 0.3;
+  CrossField held = field;
+  EXPECT_EQ(cancelCloseSingularityPairs(m, held, 0.15, levi, fixed), 0);
+  EXPECT_EQ(analyzeField(m, held).numInteriorSingularities(), 2);
+
+  EXPECT_EQ(cancelCloseSingularityPairs(m, field, 0.15, levi), 1);
+  const FieldAnalysis after = analyzeField(m, field);
+  EXPECT_EQ(after.numInteriorSingularities(), 0);
+  EXPECT_EQ(after.numBorderSingularities(), before.numBorderSingularities());
+  EXPECT_EQ(after.indexSumQuarters(), before.indexSumQuarters());
+  int changedFar = 0;
+  for (int f = 0; f < m.numFaces(); ++f)
+    changedFar += (m.faceCentroid(f) - middle).norm() > 0.3 && (field.u[f] - far.u[f]).norm() > 0;
+  EXPECT_EQ(changedFar, 0) << "crosses changed far from the pair";
+}
+
 TEST(FieldGeneration, KittenKeepsItsSingularitiesUnderNoise) {
   FCQL_REQUIRE_SHARED(path, "kitten.obj");
   SurfaceMesh m = loadMesh(path);

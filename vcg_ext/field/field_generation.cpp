@@ -387,9 +387,10 @@ std::vector<std::array<double, 3>> connectionCorrection(const SurfaceMesh& mesh,
   return rho;
 }
 
-/// Solves for the free faces; z holds the fixed values on entry and every value on return.
+/// Solves for the free faces with the connection corrected by `rho` (connectionCorrection);
+/// z holds the fixed values on entry and every value on return.
 void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, int n, double lambda,
-                    double curvatureLength, const std::vector<char>& creases,
+                    const std::vector<std::array<double, 3>>& rho, const std::vector<char>& creases,
                     const std::vector<char>& quarterCones, std::vector<Complex>& z) {
   const int nf = mesh.numFaces();
   double totalArea = 0;
@@ -403,7 +404,6 @@ void solveFreeFaces(const SurfaceMesh& mesh, const std::vector<int>& unknown, in
   offDiagonal.reserve(std::size_t(n) * 3 / 2 + 16);
   Eigen::VectorXd smoothDiagonal = Eigen::VectorXd::Zero(n);
   Eigen::VectorXcd fixedRhs = Eigen::VectorXcd::Zero(n);
-  const std::vector<std::array<double, 3>> rho = connectionCorrection(mesh, curvatureLength, creases, quarterCones);
   addSmoothness(mesh, unknown, z, rho, smoothDiagonal, offDiagonal, fixedRhs);
   // Mean diagonal of the smoothness term (edge weights are dimensionless, ~1), a reference for
   // the tiny regularisations below; 1 if no free face has a neighbour.
@@ -569,7 +569,12 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
   }
   const std::vector<Complex> fixedValues = z;
   std::vector<char> quarterCones(mesh.numVertices(), 0);
-  if (n > 0) solveFreeFaces(mesh, unknown, n, lambda, scale * mesh.boundingBoxDiagonal(), feature, quarterCones, z);
+  const double curvatureLength = scale * mesh.boundingBoxDiagonal();
+  std::vector<std::array<double, 3>> rho;
+  if (n > 0) {
+    rho = connectionCorrection(mesh, curvatureLength, feature, quarterCones);
+    solveFreeFaces(mesh, unknown, n, lambda, rho, feature, quarterCones, z);
+  }
   CrossField field = fieldFromValues(mesh, z);
 
   // Cones: an interior vertex that gathers a lot of curvature (a spike of a scan, the tip of a
@@ -585,11 +590,13 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
     for (int round = 0; round < kConeRounds && !cones.empty(); ++round) {
       for (int v : cones) quarterCones[v] = 1;
       std::vector<Complex> retry = fixedValues;
-      solveFreeFaces(mesh, unknown, n, lambda, scale * mesh.boundingBoxDiagonal(), feature, quarterCones, retry);
+      std::vector<std::array<double, 3>> retryRho = connectionCorrection(mesh, curvatureLength, feature, quarterCones);
+      solveFreeFaces(mesh, unknown, n, lambda, retryRho, feature, quarterCones, retry);
       CrossField next = fieldFromValues(mesh, retry);
       std::vector<int> left = highIndexVertices(mesh, next);
       if (left.size() >= cones.size()) break;
       field = std::move(next);
+      rho = std::move(retryRho);
       if (report) report->conesKept = int(std::count(quarterCones.begin(), quarterCones.end(), 1));
       cones = std::move(left);
     }
@@ -600,6 +607,10 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
   for (int f = 0; f < nf; ++f) fixedFace[f] = unknown[f] < 0;
   const int cancelled = cancelAdjacentSingularityPairs(mesh, field, fixedFace);
   if (report) report->pairsCancelled = cancelled;
+  // Opposite quarters closer than the scale the curvature is seen at: patches thinner than a
+  // quad between their separatrices, from noise the diffusion left.
+  const int closeCancelled = rho.empty() ? 0 : cancelCloseSingularityPairs(mesh, field, curvatureLength, rho, fixedFace);
+  if (report) report->closePairsCancelled = closeCancelled;
   return field;
 }
 

@@ -7,8 +7,8 @@
 // threshold) and to border edges. The connection's curvature is spread over a length tied to
 // the layout's scale (FieldGenerationOptions::scale), so that noise makes no singularities.
 // One sparse Hermitian solve (CHOLMOD), a few normalising refinement steps, then
-// normalisation; last, opposite singularities on the two ends of one edge are cancelled
-// (field/singularity_pairs.h). See field_generation.cpp for the formulas.
+// normalisation; last, opposite singularities on the two ends of one edge are cancelled, then
+// pairs of opposite quarters closer than the scale below (field/singularity_pairs.h). See field_generation.cpp for the formulas.
 //
 // Sharp edges constrain the field only where they form feature lines: runs of sharp edges that
 // go on nearly straight for a few edges (or for a tenth of the bounding-box diagonal). Isolated
@@ -47,6 +47,9 @@ struct FieldGenerationReport {
   /// Quarter pairs of opposite singularities on the two ends of one edge, cancelled (a ±1/2
   /// pair counts 2; singularity_pairs.h).
   int pairsCancelled = 0;
+  /// Pairs of an interior +1/4 and −1/4 closer than the field's scale, cancelled by the
+  /// smoothest field around them (singularity_pairs.h).
+  int closePairsCancelled = 0;
 };
 
 /// Per edge id (SurfaceMesh::edgeId): 1 if the dihedral angle exceeds `sharpAngleDeg`.

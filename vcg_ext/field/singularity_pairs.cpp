@@ -2,8 +2,15 @@
 
 #include "field/field_analysis.h"
 
+#include <Eigen/Sparse>
+
 #include <algorithm>
+#include <cmath>
+#include <complex>
 #include <cstdlib>
+#include <tuple>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace fcql {
 
@@ -30,6 +37,92 @@ const std::vector<std::pair<int, int>>& turns() {
     return t;
   }();
   return all;
+}
+
+
+using Complex = std::complex<double>;
+
+/// Close pairs: a neighbourhood that does not do it is tried once more this many times wider.
+constexpr double kWiderNeighbourhood = 2;
+/// The neighbourhood's radius is at least this many mean edges.
+constexpr double kMinRadiusEdges = 2;
+
+double angleInFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
+  return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+/// The faces reached from vertex s's star across interior edges, through faces whose centroid
+/// lies within `radius` of the segment [a, b] (s's star itself always).
+std::vector<int> neighbourhood(const SurfaceMesh& mesh, int s, const Vec3& a, const Vec3& b, double radius) {
+  std::vector<int> faces;
+  std::unordered_set<int> seen;
+  for (const StarCorner& c : mesh.star(s))
+    if (seen.insert(c.face).second) faces.push_back(c.face);
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      const int g = mesh.adjacentFace(faces[k], i);
+      if (g < 0 || seen.count(g) || distanceToSegment(mesh.faceCentroid(g), a, b) > radius) continue;
+      seen.insert(g);
+      faces.push_back(g);
+    }
+  return faces;
+}
+
+/// The smoothest field on the faces of `region` not marked in `fixedFace`, the others held
+/// (see the header). False if there is nothing to solve or no finite solution.
+bool smoothestInside(const SurfaceMesh& mesh, CrossField& field, const std::vector<int>& region,
+                     const std::vector<std::array<double, 3>>& rho, const std::vector<char>& fixedFace) {
+  std::unordered_map<int, int> unknown;
+  for (int f : region)
+    if (fixedFace.empty() || !fixedFace[f]) unknown.emplace(f, int(unknown.size()));
+  const int n = int(unknown.size());
+  if (n == 0) return false;
+  auto held = [&](int f) { return std::polar(1.0, 4 * angleInFrame(mesh, f, field.u[f])); };
+  std::vector<Eigen::Triplet<Complex>> lower;
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n);
+  for (const auto& [f, a] : unknown)
+    for (int i = 0; i < 3; ++i) {
+      const int g = mesh.adjacentFace(f, i);
+      if (g < 0) continue;
+      const auto other = unknown.find(g);
+      if (other != unknown.end() && g < f) continue;  // free-free edges once
+      const int j = mesh.adjacentEdge(f, i);
+      const Complex r = std::polar(1.0, 4 * (angleInFrame(mesh, g, mesh.edgeVector(g, j)) -
+                                             angleInFrame(mesh, f, mesh.edgeVector(f, i)) + rho[f][i]));  // z_g ≈ r z_f
+      const double w = mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g));
+      diagonal[a] += w;
+      if (other == unknown.end()) {
+        rhs[a] += w * std::conj(r) * held(g);
+        continue;
+      }
+      const int b = other->second;
+      diagonal[b] += w;
+      // w |z_g − r z_f|²: the entry (g, f) is −w r, its mirror the conjugate.
+      if (b > a) lower.emplace_back(b, a, -w * r);
+      else lower.emplace_back(a, b, -w * std::conj(r));
+    }
+  const double meanDiagonal = diagonal.sum() > 0 ? diagonal.sum() / n : 1.0;
+  for (int a = 0; a < n; ++a) lower.emplace_back(a, a, diagonal[a] + 1e-12 * meanDiagonal);
+  Eigen::SparseMatrix<Complex> system(n, n);
+  system.setFromTriplets(lower.begin(), lower.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> solver(system);
+  if (solver.info() != Eigen::Success) return false;
+  const Eigen::VectorXcd z = solver.solve(rhs);
+  if (solver.info() != Eigen::Success || !z.allFinite()) return false;
+  for (const auto& [f, a] : unknown) {
+    if (!(std::abs(z[a]) > 0)) continue;
+    const double theta = std::arg(z[a]) / 4;
+    field.u[f] = std::cos(theta) * mesh.faceFrameX(f) + std::sin(theta) * mesh.faceFrameY(f);
+  }
+  return true;
 }
 
 }  // namespace
@@ -78,6 +171,65 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
         if (!done) break;
       }
     }
+  return cancelled;
+}
+
+int cancelCloseSingularityPairs(const SurfaceMesh& mesh, CrossField& field, double reach,
+                                const std::vector<std::array<double, 3>>& connectionCorrection,
+                                const std::vector<char>& fixedFace) {
+  if (!(reach > 0) || int(connectionCorrection.size()) != mesh.numFaces()) return 0;
+  std::vector<int> q = computeVertexIndices(mesh, field);
+  std::vector<int> plus, minus;
+  for (int v = 0; v < mesh.numVertices(); ++v) {
+    if (mesh.isBorderVertex(v)) continue;
+    if (q[v] == 1) plus.push_back(v);
+    if (q[v] == -1) minus.push_back(v);
+  }
+  std::vector<std::tuple<double, int, int>> pairs;  // distance, +1/4, −1/4
+  for (int s : plus)
+    for (int t : minus) {
+      const double d = (mesh.position(s) - mesh.position(t)).norm();
+      if (d <= reach) pairs.emplace_back(d, s, t);
+    }
+  std::sort(pairs.begin(), pairs.end());
+  int cancelled = 0;
+  for (const auto& [d, s, t] : pairs) {
+    if (q[s] != 1 || q[t] != -1) continue;  // one of them went with an earlier pair
+    for (double wider : {1.0, kWiderNeighbourhood}) {
+      const double radius = wider * std::max(d, kMinRadiusEdges * mesh.meanEdgeLength());
+      const std::vector<int> region = neighbourhood(mesh, s, mesh.position(s), mesh.position(t), radius);
+      // The vertices whose index the region's crosses count in: every corner of its faces.
+      std::vector<int> around;
+      for (int f : region)
+        for (int c = 0; c < 3; ++c) around.push_back(mesh.vertex(f, c));
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+      if (!std::binary_search(around.begin(), around.end(), t)) continue;  // not reached across the surface
+      std::vector<Vec3> savedU;
+      for (int f : region) savedU.push_back(field.u[f]);
+      std::vector<int> savedQ;
+      for (int v : around) savedQ.push_back(q[v]);
+      bool gone = smoothestInside(mesh, field, region, connectionCorrection, fixedFace);
+      if (gone) {
+        // Two quarters fewer in all (a third singularity of the cluster may move), no new
+        // index of a half or more, the border's as it was.
+        int before = 0, after = 0;
+        for (std::size_t k = 0; k < around.size(); ++k) {
+          const int v = around[k];
+          q[v] = vertexIndexQuarters(mesh, field, v);
+          before += std::abs(savedQ[k]), after += std::abs(q[v]);
+          if ((std::abs(q[v]) > 1 && q[v] != savedQ[k]) || (mesh.isBorderVertex(v) && q[v] != savedQ[k])) gone = false;
+        }
+        gone = gone && after <= before - 2;
+      }
+      if (gone) {
+        ++cancelled;
+        break;
+      }
+      for (std::size_t k = 0; k < region.size(); ++k) field.u[region[k]] = savedU[k];
+      for (std::size_t k = 0; k < around.size(); ++k) q[around[k]] = savedQ[k];
+    }
+  }
   return cancelled;
 }
 

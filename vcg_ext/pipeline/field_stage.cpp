@@ -85,6 +85,11 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
                   ? ", " + std::to_string(r.generation.pairsCancelled) +
                         (r.generation.pairsCancelled == 1 ? " quarter pair" : " quarter pairs") +
                         " of opposite singularities on the two ends of one edge cancelled"
+                  : std::string()) +
+             (r.generation.closePairsCancelled > 0
+                  ? ", " + std::to_string(r.generation.closePairsCancelled) +
+                        (r.generation.closePairsCancelled == 1 ? " pair" : " pairs") +
+                        " of opposite quarters closer than the field scale cancelled"
                   : std::string()));
   }
   if (source.asStored) r.field = source.asStored(r.field);
@@ -129,6 +134,7 @@ FieldStageResult runFieldStage(const MeshInput& input, const PipelineParameters&
   f.set("field.constrained_faces", r.generation.constrainedFaces);
   f.set("field.quarter_cones", r.generation.conesKept);
   f.set("field.cancelled_pairs", r.generation.pairsCancelled);
+  f.set("field.cancelled_close_pairs", r.generation.closePairsCancelled);
   recordParameters(f, p, PipelineStage::Field);
   f.set("time_s.load", input.loadSeconds);
   f.set("time_s.field", r.seconds);

@@ -67,8 +67,9 @@ std::vector<S> makeTable() {
   t.push_back(real("field_scale", "field-scale", F, &P::fieldScale, 0.02, 0, 1, "of the bounding-box diagonal",
                    "Field scale (fraction of the diagonal)", "field scale as a fraction of the diagonal",
                    "Length over which the surface's curvature is spread before a computed field places its "
-                   "singularities: bumps smaller than this make no singularity pairs. 0: the curvature at each "
-                   "vertex (one singularity pair per bump of noise). Ignored when a field is read or kept."));
+                   "singularities: bumps smaller than this make no singularity pairs, and a +1/4 and a -1/4 "
+                   "closer than this are cancelled. 0: the curvature at each vertex (one singularity pair per "
+                   "bump of noise). Ignored when a field is read or kept."));
   t.push_back(text(S::File, "field_file", "field", F, &P::fieldFile, "", "", "Cross field file", "cross field file",
                    "A cross field to read instead of computing one: a .ffield (vcglib frame field) or .rosy "
                    "(4-RoSy) file with one direction per face, in the mesh's face order. A file of the wrong "
