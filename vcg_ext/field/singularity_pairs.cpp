@@ -79,17 +79,18 @@ std::vector<int> neighbourhood(const SurfaceMesh& mesh, int s, const Vec3& a, co
 /// (see the header). False if there is nothing to solve or no finite solution.
 bool smoothestInside(const SurfaceMesh& mesh, CrossField& field, const std::vector<int>& region,
                      const std::vector<std::array<double, 3>>& rho, const std::vector<char>& fixedFace) {
+  std::vector<int> free;  // the faces to solve for, in the region's order (unknown a is free[a])
   std::unordered_map<int, int> unknown;
   for (int f : region)
-    if (fixedFace.empty() || !fixedFace[f]) unknown.emplace(f, int(unknown.size()));
-  const int n = int(unknown.size());
+    if (fixedFace.empty() || !fixedFace[f]) unknown.emplace(f, int(free.size())), free.push_back(f);
+  const int n = int(free.size());
   if (n == 0) return false;
   auto held = [&](int f) { return std::polar(1.0, 4 * angleInFrame(mesh, f, field.u[f])); };
   std::vector<Eigen::Triplet<Complex>> lower;
   Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n);
-  for (const auto& [f, a] : unknown)
-    for (int i = 0; i < 3; ++i) {
+  for (int a = 0; a < n; ++a)
+    for (int i = 0, f = free[a]; i < 3; ++i) {
       const int g = mesh.adjacentFace(f, i);
       if (g < 0) continue;
       const auto other = unknown.find(g);
@@ -117,8 +118,9 @@ bool smoothestInside(const SurfaceMesh& mesh, CrossField& field, const std::vect
   if (solver.info() != Eigen::Success) return false;
   const Eigen::VectorXcd z = solver.solve(rhs);
   if (solver.info() != Eigen::Success || !z.allFinite()) return false;
-  for (const auto& [f, a] : unknown) {
+  for (int a = 0; a < n; ++a) {
     if (!(std::abs(z[a]) > 0)) continue;
+    const int f = free[a];
     const double theta = std::arg(z[a]) / 4;
     field.u[f] = std::cos(theta) * mesh.faceFrameX(f) + std::sin(theta) * mesh.faceFrameY(f);
   }
