@@ -4,9 +4,11 @@
 
 namespace fcql {
 
-double CrossField::angleInFrame(const SurfaceMesh& mesh, int f) const {
-  return std::atan2(u[f].dot(mesh.faceFrameY(f)), u[f].dot(mesh.faceFrameX(f)));
+double angleInFaceFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
+  return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
 }
+
+double CrossField::angleInFrame(const SurfaceMesh& mesh, int f) const { return angleInFaceFrame(mesh, f, u[f]); }
 
 CrossField CrossField::fromVectors(const SurfaceMesh& mesh, const std::vector<Vec3>& vectors) {
   if (int(vectors.size()) != mesh.numFaces())

@@ -16,6 +16,9 @@ struct FieldError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Angle of a vector of face f's plane in the face frame (faceFrameX, faceFrameY).
+double angleInFaceFrame(const SurfaceMesh& mesh, int f, const Vec3& v);
+
 struct CrossField {
   std::vector<Vec3> u;  ///< per face, unit and tangent to the face
 

@@ -90,9 +90,6 @@ constexpr double kMinFeatureLength = 0.1;
 /// (see generateCrossField).
 constexpr int kConeRounds = 2;
 
-double angleInFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
-  return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
-}
 
 void checkSharpAngle(double deg) {
   if (!std::isfinite(deg) || deg < 0 || deg > 180)
@@ -204,8 +201,8 @@ void addSmoothness(const SurfaceMesh& mesh, const std::vector<int>& unknown, con
       int b = unknown[g];
       if (b >= 0 && g < f) continue;  // free-free edges once, from the lower face
       int j = mesh.adjacentEdge(f, i);
-      double af = angleInFrame(mesh, f, mesh.edgeVector(f, i));
-      double ag = angleInFrame(mesh, g, mesh.edgeVector(g, j));
+      double af = angleInFaceFrame(mesh, f, mesh.edgeVector(f, i));
+      double ag = angleInFaceFrame(mesh, g, mesh.edgeVector(g, j));
       Complex r = std::polar(1.0, 4 * (ag - af + rho[f][i]));  // z_g ≈ r z_f
       double w = mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g));
       // w |z_g − r z_f|² = w |z_f|² + w |z_g|² − 2w Re(conj(z_g) r z_f)
@@ -557,7 +554,7 @@ CrossField generateCrossField(const SurfaceMesh& mesh, const FieldGenerationOpti
     if (best >= 0) {
       // A border edge: the border's direction there (its own, unless the border zigzags).
       const Vec3 along = mesh.isBorderEdge(f, best) ? mesh.borderTangent(f, best) : mesh.edgeVector(f, best);
-      z[f] = std::polar(1.0, 4 * angleInFrame(mesh, f, along));
+      z[f] = std::polar(1.0, 4 * angleInFaceFrame(mesh, f, along));
       ++numFixed;
     } else {
       unknown[f] = n++;

@@ -39,7 +39,6 @@ const std::vector<std::pair<int, int>>& turns() {
   return all;
 }
 
-
 using Complex = std::complex<double>;
 
 /// Close pairs: a neighbourhood that does not do it is tried once more this many times wider.
@@ -47,9 +46,6 @@ constexpr double kWiderNeighbourhood = 2;
 /// The neighbourhood's radius is at least this many mean edges.
 constexpr double kMinRadiusEdges = 2;
 
-double angleInFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
-  return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
-}
 
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
@@ -85,7 +81,7 @@ bool smoothestInside(const SurfaceMesh& mesh, CrossField& field, const std::vect
     if (fixedFace.empty() || !fixedFace[f]) unknown.emplace(f, int(free.size())), free.push_back(f);
   const int n = int(free.size());
   if (n == 0) return false;
-  auto held = [&](int f) { return std::polar(1.0, 4 * angleInFrame(mesh, f, field.u[f])); };
+  auto held = [&](int f) { return std::polar(1.0, 4 * angleInFaceFrame(mesh, f, field.u[f])); };
   std::vector<Eigen::Triplet<Complex>> lower;
   Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n);
@@ -96,8 +92,8 @@ bool smoothestInside(const SurfaceMesh& mesh, CrossField& field, const std::vect
       const auto other = unknown.find(g);
       if (other != unknown.end() && g < f) continue;  // free-free edges once
       const int j = mesh.adjacentEdge(f, i);
-      const Complex r = std::polar(1.0, 4 * (angleInFrame(mesh, g, mesh.edgeVector(g, j)) -
-                                             angleInFrame(mesh, f, mesh.edgeVector(f, i)) + rho[f][i]));  // z_g ≈ r z_f
+      const Complex r = std::polar(1.0, 4 * (angleInFaceFrame(mesh, g, mesh.edgeVector(g, j)) -
+                                             angleInFaceFrame(mesh, f, mesh.edgeVector(f, i)) + rho[f][i]));  // z_g ≈ r z_f
       const double w = mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g));
       diagonal[a] += w;
       if (other == unknown.end()) {
