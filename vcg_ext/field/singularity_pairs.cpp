@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <cstdlib>
 #include <tuple>
 #include <unordered_map>
@@ -183,12 +184,19 @@ int cancelCloseSingularityPairs(const SurfaceMesh& mesh, CrossField& field, doub
     if (q[v] == 1) plus.push_back(v);
     if (q[v] == -1) minus.push_back(v);
   }
+  // Mutually nearest pairs only: each quarter's nearest opposite one, if it is its nearest too
+  // (on a noisy scan with hundreds of singularities, trying every pair within reach cost more
+  // than the rest of the field and cancelled no more).
+  auto nearest = [&](int v, const std::vector<int>& others) {
+    std::pair<double, int> best(std::numeric_limits<double>::infinity(), -1);
+    for (int w : others) best = std::min(best, std::make_pair((mesh.position(v) - mesh.position(w)).norm(), w));
+    return best;
+  };
   std::vector<std::tuple<double, int, int>> pairs;  // distance, +1/4, −1/4
-  for (int s : plus)
-    for (int t : minus) {
-      const double d = (mesh.position(s) - mesh.position(t)).norm();
-      if (d <= reach) pairs.emplace_back(d, s, t);
-    }
+  for (int s : plus) {
+    const auto [d, t] = nearest(s, minus);
+    if (t >= 0 && d <= reach && nearest(t, plus).second == s) pairs.emplace_back(d, s, t);
+  }
   std::sort(pairs.begin(), pairs.end());
   int cancelled = 0;
   for (const auto& [d, s, t] : pairs) {

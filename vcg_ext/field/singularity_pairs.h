@@ -27,17 +27,19 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
 // spread over: bumps smaller than it are to make no singularities). A pair closer than a quad
 // cuts patches thinner than a quad between its separatrices, and noise makes them: the bunny
 // with noise of 0.05% of its diagonal had pairs 0.6 and 1.0 default quad edges apart, the clean
-// bunny none closer than 2.7. Taken nearest first, each pair's neighbourhood (the faces, reached
-// across the surface from the +1/4's star, whose centroid lies within `radius` of the segment
-// between the two, radius the pair's distance but at least two mean edges; twice that if the
-// first does not do it) gets the smoothest field with its surroundings held: one sparse
-// Hermitian solve of Σ w_e |z_g − r_e z_f|² over its edges (z = e^{4iθ}, r_e the transport of
-// the connection the field was solved with, its curvature spread over the field's scale,
-// w_e = |e|² / (A_f + A_g), as field_generation.cpp; with the Levi-Civita transport itself the
-// smoothest field gathers the noise's own curvature into new singularities beside the pair). The index inside sums to zero
-// (the field around it is the same), and a smooth field with nothing to follow inside has no
-// singularity there. Kept only if both quarters are gone and no other vertex's index changed;
-// faces marked fixed stay as they are.
+// bunny none closer than 2.7. Pairs of quarters each nearest to the other are taken nearest
+// first. Each pair's neighbourhood (the faces reached across the surface from the +1/4's star
+// whose centroid lies within `radius` of the segment between the two, radius the pair's
+// distance but at least two mean edges; twice that if the first does not do it) gets the
+// smoothest field with its surroundings held: one sparse Hermitian solve of
+// Σ w_e |z_g − r_e z_f|² over its edges (z = e^{4iθ}, w_e = |e|² / (A_f + A_g), as in
+// field_generation.cpp; r_e the transport of the connection the field was solved with, its
+// curvature spread over the field's scale: with the Levi-Civita transport itself the smoothest
+// field gathers the noise's own curvature into new singularities beside the pair). The index
+// inside sums to zero (the field around it is the same), and a smooth field with nothing to
+// follow inside has no singularity there. Kept only if the index of the neighbourhood's
+// vertices drops by two quarters in all (a third singularity of a cluster may move), no index
+// of a half or more appears and no border vertex's changes; faces marked fixed stay as they are.
 
 /// Returns the number of pairs cancelled. `connectionCorrection[f][i]`: the rotation added to
 /// the transport across edge i of face f (ρ of field_generation.cpp: the connection whose
