@@ -8,7 +8,8 @@
 // the layout's scale (FieldGenerationOptions::scale), so that noise makes no singularities.
 // One sparse Hermitian solve (CHOLMOD), a few normalising refinement steps, then
 // normalisation; last, opposite singularities on the two ends of one edge are cancelled, then
-// pairs of opposite quarters closer than the scale below (field/singularity_pairs.h). See field_generation.cpp for the formulas.
+// pairs of opposite quarters closer than the scale below (field/singularity_pairs.h). See
+// field_generation.cpp for the formulas.
 //
 // Sharp edges constrain the field only where they form feature lines: runs of sharp edges that
 // go on nearly straight for a few edges (or for a tenth of the bounding-box diagonal). Isolated

@@ -47,7 +47,6 @@ constexpr double kWiderNeighbourhood = 2;
 /// The neighbourhood's radius is at least this many mean edges.
 constexpr double kMinRadiusEdges = 2;
 
-
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
   const double length2 = ab.squaredNorm();
