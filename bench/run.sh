@@ -346,7 +346,7 @@ mesh of camelhead, aqua_center, lilium and three meshes with holes cut into them
   Levi-Civita transport itself the noise's own curvature made new singularities beside the
   pair); kept if the index there drops by two quarters, no index of a half appears and no border
   vertex changes. The shared meshes' computed fields are byte-identical (deckel's pair at 0.9 is
-  tried and left: the smoothest field around it does not take it away). The bunny with noise, seed 2:
+  left as it was). The bunny with noise, seed 2:
   30 → 28 singularities (the clean bunny's 28), 79 → 63 patches at the bench's α and k (82 → 63 at
   the defaults), still conforming; misaligned quads 9.7% → 10.2%. Fertility with 8 holes cut
   into it (defaults): 49 → 47 singularities, 351 → 353 patches, misaligned quads 10.2% → 7.9%,
