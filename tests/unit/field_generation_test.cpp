@@ -403,6 +403,40 @@ TEST(FieldGeneration, CloseOppositeQuartersAreCancelled) {
   for (int f = 0; f < m.numFaces(); ++f)
     changedFar += (m.faceCentroid(f) - middle).norm() > 0.3 && (field.u[f] - far.u[f]).norm() > 0;
   EXPECT_EQ(changedFar, 0) << "crosses changed far from the pair";
+
+  // A connection correction that is not one per face is not used: nothing changes.
+  CrossField mismatched = held;
+  const std::vector<std::array<double, 3>> short_(m.numFaces() - 1, {0.0, 0.0, 0.0});
+  EXPECT_EQ(cancelCloseSingularityPairs(m, mismatched, 0.15, short_), 0);
+  for (int f = 0; f < m.numFaces(); ++f) ASSERT_EQ(mismatched.u[f], held.u[f]) << "face " << f;
+}
+
+// A cluster of three quarters (+1/4, −1/4, +1/4) on a flat sheet: the closest pair goes, and the
+// third quarter, near enough to lie in the pair's neighbourhood, stays a single +1/4 (it may
+// move). The index drops by two quarters in all, which is the rule for keeping the result.
+TEST(FieldGeneration, CloseQuarterPairGoesFromAClusterOfThree) {
+  const int n = 40;
+  const SurfaceMesh m = gridSurface(n, n, false, false, [](double s, double t) { return Vec3(s, t, 0); });
+  const Vec3 a(0.4507, 0.5031, 0), b(0.5493, 0.4969, 0), c(0.5021, 0.5817, 0);
+  auto arg = [](const Vec3& p, const Vec3& o) { return std::atan2(p.y() - o.y(), p.x() - o.x()); };
+  CrossField field;
+  for (int f = 0; f < m.numFaces(); ++f) {
+    const Vec3 p = m.faceCentroid(f);
+    const double phi = (arg(p, a) - arg(p, b) + arg(p, c)) / 4;
+    field.u.push_back(Vec3(std::cos(phi), std::sin(phi), 0));
+  }
+  const FieldAnalysis before = analyzeField(m, field);
+  ASSERT_EQ(before.numInteriorSingularities(), 3);
+  const std::vector<std::array<double, 3>> levi(m.numFaces(), {0.0, 0.0, 0.0});
+  EXPECT_EQ(cancelCloseSingularityPairs(m, field, 0.15, levi), 1);
+  const FieldAnalysis after = analyzeField(m, field);
+  ASSERT_EQ(after.numInteriorSingularities(), 1);
+  EXPECT_EQ(after.indexSumQuarters(), before.indexSumQuarters());
+  for (const SingularVertex& s : after.singularities)
+    if (!s.onBorder) {
+      EXPECT_EQ(s.indexQuarters, 1);
+      EXPECT_LT((m.position(s.vertex) - c).norm(), 0.1) << "the +1/4 left is not the third one";
+    }
 }
 
 TEST(FieldGeneration, KittenKeepsItsSingularitiesUnderNoise) {

@@ -8,6 +8,14 @@ double angleInFaceFrame(const SurfaceMesh& mesh, int f, const Vec3& v) {
   return std::atan2(v.dot(mesh.faceFrameY(f)), v.dot(mesh.faceFrameX(f)));
 }
 
+EdgeSmoothness edgeSmoothness(const SurfaceMesh& mesh, int f, int i, double rho) {
+  const int g = mesh.adjacentFace(f, i), j = mesh.adjacentEdge(f, i);
+  const double af = angleInFaceFrame(mesh, f, mesh.edgeVector(f, i));
+  const double ag = angleInFaceFrame(mesh, g, mesh.edgeVector(g, j));
+  return {std::polar(1.0, 4 * (ag - af + rho)),
+          mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g))};
+}
+
 double CrossField::angleInFrame(const SurfaceMesh& mesh, int f) const { return angleInFaceFrame(mesh, f, u[f]); }
 
 CrossField CrossField::fromVectors(const SurfaceMesh& mesh, const std::vector<Vec3>& vectors) {

@@ -8,6 +8,7 @@
 
 #include "mesh/surface_mesh.h"
 
+#include <complex>
 #include <vector>
 
 namespace fcql {
@@ -18,6 +19,17 @@ struct FieldError : std::runtime_error {
 
 /// Angle of a vector of face f's plane in the face frame (faceFrameX, faceFrameY).
 double angleInFaceFrame(const SurfaceMesh& mesh, int f, const Vec3& v);
+
+/// The smoothness term of the cross field across edge i of face f, shared with face g on the
+/// other side: a field is smooth there when z_g ≈ transport · z_f (z = e^{4iθ} in each face's
+/// frame), and the term weight · |z_g − transport · z_f|² enters the smoothness energy.
+/// `rho` corrects the parallel transport across the edge (0: Levi-Civita); the weight
+/// |e|² / (A_f + A_g) is dimensionless. Edge i must not be a border edge.
+struct EdgeSmoothness {
+  std::complex<double> transport;
+  double weight;
+};
+EdgeSmoothness edgeSmoothness(const SurfaceMesh& mesh, int f, int i, double rho);
 
 struct CrossField {
   std::vector<Vec3> u;  ///< per face, unit and tangent to the face

@@ -200,11 +200,7 @@ void addSmoothness(const SurfaceMesh& mesh, const std::vector<int>& unknown, con
       if (g < 0) continue;
       int b = unknown[g];
       if (b >= 0 && g < f) continue;  // free-free edges once, from the lower face
-      int j = mesh.adjacentEdge(f, i);
-      double af = angleInFaceFrame(mesh, f, mesh.edgeVector(f, i));
-      double ag = angleInFaceFrame(mesh, g, mesh.edgeVector(g, j));
-      Complex r = std::polar(1.0, 4 * (ag - af + rho[f][i]));  // z_g ≈ r z_f
-      double w = mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g));
+      const auto [r, w] = edgeSmoothness(mesh, f, i, rho[f][i]);  // z_g ≈ r z_f
       // w |z_g − r z_f|² = w |z_f|² + w |z_g|² − 2w Re(conj(z_g) r z_f)
       diagonal[a] += w;
       if (b >= 0) {

@@ -91,10 +91,7 @@ bool smoothestInside(const SurfaceMesh& mesh, CrossField& field, const std::vect
       if (g < 0) continue;
       const auto other = unknown.find(g);
       if (other != unknown.end() && g < f) continue;  // free-free edges once
-      const int j = mesh.adjacentEdge(f, i);
-      const Complex r = std::polar(1.0, 4 * (angleInFaceFrame(mesh, g, mesh.edgeVector(g, j)) -
-                                             angleInFaceFrame(mesh, f, mesh.edgeVector(f, i)) + rho[f][i]));  // z_g ≈ r z_f
-      const double w = mesh.edgeVector(f, i).squaredNorm() / (mesh.faceArea(f) + mesh.faceArea(g));
+      const auto [r, w] = edgeSmoothness(mesh, f, i, rho[f][i]);  // z_g ≈ r z_f
       diagonal[a] += w;
       if (other == unknown.end()) {
         rhs[a] += w * std::conj(r) * held(g);

@@ -32,12 +32,12 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
 // whose centroid lies within `radius` of the segment between the two, radius the pair's
 // distance but at least two mean edges; twice that if the first does not do it) gets the
 // smoothest field with its surroundings held: one sparse Hermitian solve of
-// Σ w_e |z_g − r_e z_f|² over its edges (z = e^{4iθ}, w_e = |e|² / (A_f + A_g), as in
-// field_generation.cpp; r_e the transport of the connection the field was solved with, its
-// curvature spread over the field's scale: with the Levi-Civita transport itself the smoothest
-// field gathers the noise's own curvature into new singularities beside the pair). The index
-// inside sums to zero (the field around it is the same), and a smooth field with nothing to
-// follow inside has no singularity there. Kept only if the index of the neighbourhood's
+// Σ w_e |z_g − r_e z_f|² over its edges (z = e^{4iθ}, w_e = |e|² / (A_f + A_g): edgeSmoothness
+// of cross_field.h, as in field_generation.cpp; r_e the transport of the connection the field
+// was solved with, its curvature spread over the field's scale: with the Levi-Civita transport
+// itself the smoothest field gathers the noise's own curvature into new singularities beside
+// the pair). The index inside sums to zero (the field around it is the same), and a smooth
+// field with nothing to follow inside has no singularity there. Kept only if the index of the neighbourhood's
 // vertices drops by two quarters in all (a third singularity of a cluster may move), no index
 // of a half or more appears and no border vertex's changes; faces marked fixed stay as they are.
 
