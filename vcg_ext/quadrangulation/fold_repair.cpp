@@ -1,6 +1,7 @@
 #include "quadrangulation/fold_repair.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace fcql {
@@ -32,10 +33,15 @@ double quadEnergy(const QuadMesh& mesh, int q, const std::vector<Vec3>& normal, 
     own = (P[f[2]] - P[f[0]]).cross(P[f[3]] - P[f[1]]);
     if (own.norm() > 0) own.normalize();
   }
+  // The four edges and their lengths once: corner i's edges are edge i and edge i + 3 reversed
+  // (the same figures, to the bit, as each corner's own differences: a − b is −(b − a) exactly).
+  std::array<Vec3, 4> edge;
+  std::array<double, 4> length;
+  for (int i = 0; i < 4; ++i) edge[i] = P[f[(i + 1) % 4]] - P[f[i]], length[i] = edge[i].norm();
   for (int i = 0; i < 4; ++i) {
-    const Vec3 e1 = P[f[(i + 1) % 4]] - P[f[i]];
-    const Vec3 e2 = P[f[(i + 3) % 4]] - P[f[i]];
-    const double l = e1.norm() * e2.norm();
+    const Vec3& e1 = edge[i];
+    const Vec3 e2 = -edge[(i + 3) % 4];
+    const double l = length[i] * length[(i + 3) % 4];
     const Vec3 c = e1.cross(e2);
     const Vec3& n = normal[f[i]];
     const double a = c.dot(n);
