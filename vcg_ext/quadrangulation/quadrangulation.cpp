@@ -5,6 +5,7 @@
 #include "util/worker_threads.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <future>
@@ -187,7 +188,10 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
   laplacian.triangleDirections.clear();
   // Candidate k: its mesh sampled and smoothed into a copy of r, with its folds; none if it
   // folds no fewer than r or is not accepted.
-  auto attempt = [&](int k) -> std::optional<std::pair<QuadrangulationResult, int>> {
+  // `dropped`, if given, is set once the candidate's result is no longer wanted: it then
+  // stops between its sampling, its smoothing and its measuring.
+  auto attempt = [&](int k, const std::atomic<bool>* dropped = nullptr) -> std::optional<std::pair<QuadrangulationResult, int>> {
+    auto droppedNow = [&] { return dropped && dropped->load(); };
     QuadrangulationResult c = r;
     c.restoredVertices = 0;
     const bool resample = k == 1 || k == 3;  // the patches around the folds sampled again
@@ -219,11 +223,12 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
         markChangedPatches(c.mesh, meanValue, r.meanValuePatches, region);
     }
     c.mesh.positions = c.sampledPositions;
+    if (droppedNow()) return std::nullopt;
     SmoothingOptions smoothing = resample ? smoothingFor(layout, options, &c.meanValuePatches) : laplacian;
     const bool local = k != 2 && smoothOnlyAround(c, r, region, smoothing);
     c.smoothing = smoothQuadMesh(c.mesh, layout.positions, layout.triangles, smoothing);
     const int folds = foldedQuads(c.mesh);
-    if (!(folds < before)) return std::nullopt;
+    if (!(folds < before) || droppedNow()) return std::nullopt;
     c.report = checkQuadMesh(c.mesh);
     if (!c.report.manifold || !accept(c)) return std::nullopt;
     c.foldsResmoothed = c.foldsResmoothed || k == 0;
@@ -250,12 +255,19 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
     if (together) {
       // The second way on a thread of its own beside the first: both are mostly sequential
       // (untangling, fold repair, sampling), and neither reads what the other writes.
-      auto second = std::async(std::launch::async, [&] { return attempt(1); });
+      std::atomic<bool> secondDropped{false};
+      auto second = std::async(std::launch::async, [&] { return attempt(1, &secondDropped); });
       best = attempt(0);
       // (1) counts only where (0) leaves folds, as when they run one after the other: only
-      // then does its result, or its error, come out (waited for either way).
-      if (!best || best->second > 0) resampled = second.get();
-      else second.wait();
+      // then does its result, or its error, come out. Else it is told to stop at its next
+      // step (its sampling, smoothing or measuring: the dragon's last round waited 0.5 s for
+      // a smoothing whose result it dropped) and waited for.
+      if (!best || best->second > 0) {
+        resampled = second.get();
+      } else {
+        secondDropped = true;
+        second.wait();
+      }
     } else {
       best = attempt(0);
       if (!best || best->second > 0) resampled = attempt(1);  // none can fold fewer than none
