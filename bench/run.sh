@@ -195,11 +195,53 @@ if [ ${#noise_names[@]} -gt 0 ]; then
   done
 fi
 
+# Computed-field rows: the meshes that ship a field, run with fcql's own field instead (the
+# meshes a user brings have none; the dragon is a detailed scan), with the row's α and k.
+own_names=()
+for name in dragon eight lilium; do
+  [ -f "$out/$name/stats.json" ] && [ -f "$shared/$name.ffield" ] && own_names+=("$name")
+done
+if [ ${#own_names[@]} -gt 0 ]; then
+  {
+    echo
+    echo "Own field: the meshes that ship a field, run with the field fcql computes instead (\`fcql run\` without"
+    echo "\`--field\`, the row's α and k). S: singularities of the shipped field → of fcql's; ref.: passes refined"
+    echo "for the distance bound (the quads' target edge then smaller than 2% of the diagonal); folded: quads with"
+    echo "a scaled Jacobian ≤ 0; quad, total: seconds."
+    echo
+    echo "| mesh | S shipped → own | patches | t-j | dangling | invalid | quads | ref. | irr. | BC | mis. % | SJ min / mean | folded | Hd % | quad | total |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  } > "$out/own.md"
+  for name in "${own_names[@]}"; do
+    s0=$(value "$out/$name/stats.json" field singularities)
+    own="$out/$name-own"
+    echo "bench: $name with fcql's own field (alpha ${run_alpha[$name]}, k ${run_k[$name]})" >&2
+    rm -rf "$own"
+    if ! timeout "$limit" "$fcql" run "$shared/$name.obj" --alpha "${run_alpha[$name]}" --k "${run_k[$name]}" --phi 10 \
+        --out "$own" --quiet 2>"$own.err"; then
+      echo "| $name | $s0 | failed: $(tail -1 "$own.err" | sed 's/^fcql: error: //; s/|/\\|/g') |" >> "$out/own.md"
+      failures+=("$name (own field)")
+      continue
+    fi
+    os="$own/stats.json"
+    hd=$(value "$os" quad hausdorff_rel)
+    printf '| %s | %s → %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s | %s | %s | %s |\n' \
+      "$name" "$s0" "$(value "$os" field singularities)" "$(value "$os" layout patches)" \
+      "$(value "$os" layout t_junctions)" "$(value "$os" layout dangling_ports)" "$(value "$os" layout invalid_patches)" \
+      "$(value "$os" quad faces)" "$(value "$os" quad refinements)" "$(value "$os" quad irregular_vertices)" \
+      "$(value "$os" quad base_complex_patches)" "$(fmt %.1f "$(value "$os" quad misaligned_pct)")" \
+      "$(fmt %.2f "$(value "$os" quad min_scaled_jacobian)")" "$(fmt %.2f "$(value "$os" quad mean_scaled_jacobian)")" \
+      "$(value "$os" quad inverted_quads)" "$(awk -v h="$hd" 'BEGIN { printf "%.2f", 100 * h }')" \
+      "$(fmt %.2f "$(value "$os" time_s quadrangulation)")" "$(fmt %.2f "$(value "$os" time_s total)")" >> "$out/own.md"
+  done
+fi
+
 {
   if [ -f "$out/noise.md" ]; then cat "$out/noise.md"; fi
+  if [ -f "$out/own.md" ]; then cat "$out/own.md"; fi
   if [ ${#failures[@]} -gt 0 ]; then
     echo
-    echo "Failed in \`fcql run\`: ${failures[*]} (reason in the row; the layout figures then come from \`fcql layout\`, not for the noise rows)."
+    echo "Failed in \`fcql run\`: ${failures[*]} (reason in the row; the layout figures then come from \`fcql layout\`, not for the noise and own-field rows)."
   fi
   cat <<'NOTES'
 
