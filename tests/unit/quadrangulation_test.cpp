@@ -5,6 +5,7 @@
 #include "metrics/base_complex.h"
 #include "metrics/quad_quality.h"
 #include "mesh/mesh_io.h"
+#include "quadrangulation/far_point_snapping.h"
 #include "quadrangulation/quadrangulation.h"
 #include "test_support.h"
 #include "tracing/separatrix_graph.h"
@@ -872,6 +873,103 @@ TEST(Quadrangulation, SmoothingIsUndoneAroundPointsFarFromTheSurface) {
   for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(scaledJacobian(grid, q), 0.1) << "quad " << q;
   EXPECT_EQ(restoreSampledPositions(grid, sampled, {}, 2.0), 0);
   EXPECT_THROW(restoreSampledPositions(grid, {Vec3::Zero()}, {far}, 2.0), std::invalid_argument);
+}
+
+TEST(Quadrangulation, VerticesGoOntoTheTipsTheQuadsMiss) {
+  // A flat 9×9 grid of unit quads over a surface that is the same grid with one vertex lifted
+  // 0.8 (a spike narrower than a quad), the bound 0.5. The quad vertex under the spike goes onto
+  // its tip, one vertex for all the points of the spike farther than the bound; a point off the
+  // surface is not taken. A tip at a border vertex, or over the middle of a quad (where its
+  // nearest corners would fold their quads), moves nothing.
+  const int n = 9;
+  auto surfaceWithTip = [&](const Vec3& tip) {
+    std::vector<Vec3> positions;
+    std::vector<std::array<int, 3>> triangles;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) positions.push_back(Vec3(i, j, 0));
+    const int apex = int(positions.size());
+    positions.push_back(tip);
+    const int ci = int(std::floor(tip.x())), cj = int(std::floor(tip.y()));
+    const bool inCell = tip.x() != ci || tip.y() != cj;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+        if (inCell && i == ci && j == cj) {
+          for (auto [u, v] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) triangles.push_back({u, v, apex});
+        } else {
+          triangles.push_back({a, b, c});
+          triangles.push_back({a, c, d});
+        }
+      }
+    if (!inCell)  // the tip replaces the grid vertex under it
+      for (auto& t : triangles)
+        for (int& v : t)
+          if (v == (n + 1) * cj + ci) v = apex;
+    return std::make_pair(positions, triangles);
+  };
+  const double limit = 0.5;
+
+  const Vec3 tip(4, 4, 0.8);
+  const auto [P, T] = surfaceWithTip(tip);
+  const ClosestPointIndex surface(P, T);
+  QuadMesh grid = test::planarGrid(n);
+  const std::vector<Vec3> flat = grid.positions;
+  const std::vector<Vec3> far = {Vec3(4.1, 4, 0.72), tip, Vec3(3.9, 4.05, 0.7), Vec3(2, 2, 0.9)};
+  EXPECT_EQ(snapVerticesToFarPoints(grid, surface, far, limit, 0.1), 1);
+  for (int v = 0; v < grid.numVertices(); ++v)
+    EXPECT_EQ(grid.positions[v], v == (n + 1) * 4 + 4 ? tip : flat[v]) << "vertex " << v;
+  for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(scaledJacobian(grid, q), 0.1) << "quad " << q;
+  SurfaceDeviation d = measureDeviation(grid, surface, limit, 0.01);
+  EXPECT_LE(d.bound, limit) << "the quads still miss the tip";
+  EXPECT_EQ(snapVerticesToFarPoints(grid, surface, d.farPoints, limit, 0.1), 0);
+
+  // At a border vertex: that vertex stays on the border (an inner neighbour may go to the tip).
+  {
+    const Vec3 onBorder(0, 4, 0.8);
+    const auto [P2, T2] = surfaceWithTip(onBorder);
+    const ClosestPointIndex other(P2, T2);
+    QuadMesh bordered = test::planarGrid(n);
+    EXPECT_GT(measureDeviation(bordered, other, limit, 0.01).bound, limit);
+    snapVerticesToFarPoints(bordered, other, {onBorder}, limit, 0.1);
+    for (int j = 0; j <= n; ++j) EXPECT_EQ(bordered.positions[(n + 1) * j], flat[(n + 1) * j]) << "border vertex (0, " << j << ")";
+    for (int q = 0; q < bordered.numQuads(); ++q) EXPECT_GT(scaledJacobian(bordered, q), 0.1) << "quad " << q;
+  }
+  // A tip across a gap: the surface is two flat sheets, the quads cover one; the point on the
+  // other sheet (1.2 above, the bound 0.5) would need quad edges through the gap: nothing moves.
+  {
+    std::vector<Vec3> P2;
+    std::vector<std::array<int, 3>> T2;
+    for (double z : {0.0, 1.2}) {
+      const int o = int(P2.size());
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) P2.push_back(Vec3(i, j, z));
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const int a = o + (n + 1) * j + i;
+          T2.push_back({a, a + 1, a + n + 2});
+          T2.push_back({a, a + n + 2, a + n + 1});
+        }
+    }
+    const ClosestPointIndex sheets(P2, T2);
+    QuadMesh one = test::planarGrid(n);
+    EXPECT_EQ(snapVerticesToFarPoints(one, sheets, {Vec3(4, 4, 1.2)}, limit, 0.1), 0);
+    EXPECT_EQ(one.positions, flat);
+  }
+  // Over the middle of a quad: a corner goes onto it, its quads still at a scaled Jacobian of
+  // about 0.75; asked to keep them above 0.9, none moves.
+  {
+    const Vec3 middle(4.5, 4.5, 0.8);
+    const auto [P2, T2] = surfaceWithTip(middle);
+    const ClosestPointIndex other(P2, T2);
+    QuadMesh strict = test::planarGrid(n);
+    EXPECT_EQ(snapVerticesToFarPoints(strict, other, {middle}, limit, 0.9), 0);
+    EXPECT_EQ(strict.positions, flat);
+    QuadMesh loose = test::planarGrid(n);
+    EXPECT_EQ(snapVerticesToFarPoints(loose, other, {middle}, limit, 0.1), 1);
+    EXPECT_EQ(std::count(loose.positions.begin(), loose.positions.end(), middle), 1);
+    for (int q = 0; q < loose.numQuads(); ++q) EXPECT_GT(scaledJacobian(loose, q), 0.1) << "quad " << q;
+    EXPECT_LE(measureDeviation(loose, other, limit, 0.01).bound, limit);
+  }
 }
 
 TEST(Quadrangulation, FandiskNeedsNoFinerPassOnceSmoothingSparesItsTips) {

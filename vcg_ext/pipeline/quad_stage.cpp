@@ -37,6 +37,9 @@ void describe(const QuadStageResult& s, const QuadrangulationOptions& options, i
   const QuadrangulationResult& r = s.quad;
   const QuadMesh& q = r.mesh;
   for (const std::string& note : refinementNotes(r, options)) log.info(note);
+  if (r.snappedVertices > 0)
+    log.info(std::to_string(r.snappedVertices) + " quad vertices moved onto points of the surface that the quads missed "
+             "by more than the distance bound (tips, spikes or fins narrower than a quad)");
   if (r.splitPatches > 0)
     log.info("Zero chains: " + std::to_string(r.splitPatches) + " patches split by Catmull-Clark steps (" +
              std::to_string(r.splitRounds) + " rounds)");
@@ -104,6 +107,7 @@ void record(const QuadStageResult& s, const PipelineParameters& p, Figures& f) {
   f.set("quad.target_edge_length", r.targetEdgeLength);
   f.set("quad.refinements", r.refinements);
   f.set("quad.restored_vertices", r.restoredVertices);
+  f.set("quad.snapped_vertices", r.snappedVertices);
   f.set("quad.stretch_bound_dropped", r.stretchBoundDropped);
   f.set("quad.split_every_patch", r.splitEverything);
   f.set("quad.zero_chain_splits", r.splitPatches);

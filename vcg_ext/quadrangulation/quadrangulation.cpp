@@ -1,6 +1,7 @@
 #include "quadrangulation/quadrangulation.h"
 
 #include "mesh/closest_point_index.h"
+#include "quadrangulation/far_point_snapping.h"
 #include "metrics/quad_quality.h"
 #include "util/worker_threads.h"
 
@@ -103,6 +104,11 @@ int departure(char mark) { return mark == kMeanValuePatch ? 2 : mark == kArcLeng
 /// of its 5,852 patches and stays.
 constexpr double kLocalFallbackShare = 0.25;
 
+/// Rounds of snapping quad vertices onto the surface's points the quads miss, and the scaled
+/// Jacobian no quad may fall to for it (far_point_snapping.h).
+constexpr int kSnapRounds = 3;
+constexpr double kSnapFloor = 0.1;
+
 /// Further rounds of reduceFolds' second way (sampling the patches around the folds again).
 constexpr int kResampleRounds = 3;
 
@@ -194,6 +200,7 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
     auto droppedNow = [&] { return dropped && dropped->load(); };
     QuadrangulationResult c = r;
     c.restoredVertices = 0;
+    c.snappedVertices = 0;
     const bool resample = k == 1 || k == 3;  // the patches around the folds sampled again
     // The vertices to smooth again (all but k = 2): around the folds' corners, and the patches
     // sampled again.
@@ -412,6 +419,7 @@ QuadrangulationResult quadrangulateOnce(const PatchLayout& layout, const Quadran
   if (local) {
     r.smoothing.fixedVertices = previous->smoothing.fixedVertices;  // the region's alone otherwise
     r.restoredVertices = previous->restoredVertices;                // kept outside the region
+    r.snappedVertices = previous->snappedVertices;
   }
   r.report = checkQuadMesh(r.mesh);
   if (!r.report.manifold)
@@ -481,6 +489,23 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
         break;
       }
       q.restoredVertices += restored;
+      q.deviation = after.distance;
+      q.deviationBound = after.bound;
+      d = std::move(after);
+    }
+    // Still too far: the spots the quads miss get a vertex each (far_point_snapping.h), a few
+    // rounds while the bound drops. The refinements size their steps by the bound before.
+    q.boundBeforeSnapping = q.deviationBound;
+    for (int round = 0; round < kSnapRounds && q.deviationBound > limit; ++round) {
+      const std::vector<Vec3> before = q.mesh.positions;
+      const int snapped = snapVerticesToFarPoints(q.mesh, surface, d.farPoints, limit, kSnapFloor);
+      if (snapped == 0) break;
+      SurfaceDeviation after = measureDeviation(q.mesh, surface, limit, resolution);
+      if (!(after.bound < q.deviationBound)) {
+        q.mesh.positions = before;
+        break;
+      }
+      q.snappedVertices += snapped;
       q.deviation = after.distance;
       q.deviationBound = after.bound;
       d = std::move(after);
@@ -593,7 +618,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
   // the bound of 1% after the third).
   QuadrangulationOptions finer = options;
   int refinements = r.refinements;
-  double lastBound = r.deviationBound;
+  double lastBound = r.boundBeforeSnapping;
   int lastQuads = r.mesh.numQuads();
   while (r.deviationBound > limit && refinements < options.maxRefinements) {
     const double step = std::clamp(0.9 * std::sqrt(limit / lastBound), 0.5, 0.9);
@@ -608,7 +633,7 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
       QuadrangulationResult next = quadrangulateOnce(layout, finer, topology, cache);
       next.refinements = refinements;
       measure(next);
-      lastBound = next.deviationBound;
+      lastBound = next.boundBeforeSnapping;
       lastQuads = next.mesh.numQuads();
       if (!(next.deviationBound < r.deviationBound)) {
         // Smaller quads that got no closer: the closer mesh stays, and says so if it is the last.

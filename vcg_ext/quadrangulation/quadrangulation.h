@@ -61,6 +61,10 @@ struct QuadrangulationResult {
   /// Vertices put back towards their sampled positions where the smoothed quads strayed more
   /// than maxDeviation from the surface (restoreSampledPositions).
   int restoredVertices = 0;
+  /// Vertices moved onto points of the surface the quads missed by more than maxDeviation
+  /// (snapVerticesToFarPoints: spikes and fins narrower than a quad).
+  int snappedVertices = 0;
+  double boundBeforeSnapping = 0;  ///< deviationBound before snapVerticesToFarPoints
   double targetEdgeLength = 0;  ///< the target edge length the mesh was sampled with
   int refinements = 0;          ///< times the target was lowered to meet maxDeviation
   double deviation = 0;         ///< Hausdorff distance to the surface found, absolute (0 if not measured)

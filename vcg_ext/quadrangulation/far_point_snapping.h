@@ -1,0 +1,34 @@
+// Quad vertices moved onto the points of the surface the quads miss.
+//
+// On a scan, the quads' distance to the surface is mostly that of a few spots: a claw's tip, a
+// spike or the edge of a fin narrower than a quad, which the quads cut across. Smaller quads
+// everywhere (the quad stage's refinements) reach them only once they are about as small as the
+// spot (the dragon with fcql's own field: 20K quads 2.96 times the bound away, then 44K, 107K and
+// 192K quads, the last within it by 0.03%, all for a few such spots). Here the vertex of the
+// quads nearest to such a point goes onto it instead, one vertex per spot, so that the quads
+// reach it.
+#pragma once
+
+#include "mesh/closest_point_index.h"
+#include "mesh/quad_mesh.h"
+
+#include <vector>
+
+namespace fcql {
+
+/// `far`: points where the quads and the surface may be farther apart than `limit` (as
+/// measureDeviation finds them, on either surface). Those on the surface (`surface`, within a
+/// millionth of `limit`) that are farther than `limit` from the quads are taken farthest first;
+/// each takes the nearest corner of the quad triangle nearest to it, unless a point taken before
+/// lies closer to it than its own distance to the quads (the same spot: the next measurement
+/// tells whether it is still missed). A vertex on the border of the quads is not moved, nor one
+/// whose move would take a quad that depends on it (QuadJacobian) to a scaled Jacobian of `floor`
+/// or below where it was above (or fold one), or put the midpoint of one of its quad edges
+/// farther than `limit` from the surface (a bridge to another part of it, across a gap narrower
+/// than a quad); the triangle's next corner is tried.
+/// Returns how many vertices moved. The connectivity does not change, and moved vertices lie on
+/// the surface.
+int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<Vec3>& far,
+                            double limit, double floor);
+
+}  // namespace fcql
