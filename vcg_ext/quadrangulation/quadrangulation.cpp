@@ -479,37 +479,37 @@ QuadrangulationResult quadrangulateWith(const PatchLayout& layout, const Quadran
     SurfaceDeviation d = measureDeviation(q.mesh, surface, limit, resolution);
     q.deviation = d.distance;
     q.deviationBound = d.bound;
-    for (int round = 0; round < 3 && q.deviationBound > limit; ++round) {
-      const std::vector<Vec3> smoothed = q.mesh.positions;
-      const int restored = restoreSampledPositions(q.mesh, q.sampledPositions, d.farPoints, 2 * q.targetEdgeLength);
-      if (restored == 0) break;
-      SurfaceDeviation after = measureDeviation(q.mesh, surface, limit, resolution);
-      if (!(after.bound < q.deviationBound)) {
-        q.mesh.positions = smoothed;
-        break;
+    // Rounds of `move` (which moves vertices of q.mesh, given the points too far, and returns
+    // how many it moved), each kept only if the measured bound drops; `count` adds them up.
+    auto whileCloser = [&](int rounds, const auto& move, int& count) {
+      for (int round = 0; round < rounds && q.deviationBound > limit; ++round) {
+        const std::vector<Vec3> before = q.mesh.positions;
+        const int moved = move(d.farPoints);
+        if (moved == 0) break;
+        SurfaceDeviation after = measureDeviation(q.mesh, surface, limit, resolution);
+        if (!(after.bound < q.deviationBound)) {
+          q.mesh.positions = before;
+          break;
+        }
+        count += moved;
+        q.deviation = after.distance;
+        q.deviationBound = after.bound;
+        d = std::move(after);
       }
-      q.restoredVertices += restored;
-      q.deviation = after.distance;
-      q.deviationBound = after.bound;
-      d = std::move(after);
-    }
+    };
+    whileCloser(
+        3,
+        [&](const std::vector<Vec3>& far) {
+          return restoreSampledPositions(q.mesh, q.sampledPositions, far, 2 * q.targetEdgeLength);
+        },
+        q.restoredVertices);
     // Still too far: the spots the quads miss get a vertex each (far_point_snapping.h), a few
     // rounds while the bound drops. The refinements size their steps by the bound before.
     q.boundBeforeSnapping = q.deviationBound;
-    for (int round = 0; round < kSnapRounds && q.deviationBound > limit; ++round) {
-      const std::vector<Vec3> before = q.mesh.positions;
-      const int snapped = snapVerticesToFarPoints(q.mesh, surface, d.farPoints, limit, kSnapFloor);
-      if (snapped == 0) break;
-      SurfaceDeviation after = measureDeviation(q.mesh, surface, limit, resolution);
-      if (!(after.bound < q.deviationBound)) {
-        q.mesh.positions = before;
-        break;
-      }
-      q.snappedVertices += snapped;
-      q.deviation = after.distance;
-      q.deviationBound = after.bound;
-      d = std::move(after);
-    }
+    whileCloser(
+        kSnapRounds,
+        [&](const std::vector<Vec3>& far) { return snapVerticesToFarPoints(q.mesh, surface, far, limit, kSnapFloor); },
+        q.snappedVertices);
     if (farPoints) *farPoints = std::move(d.farPoints);
   };
   // A pass at the asked size, measured (and restored): cached, as the stage without the field
