@@ -931,7 +931,8 @@ TEST(Quadrangulation, VerticesGoOntoTheTipsTheQuadsMiss) {
     QuadMesh bordered = test::planarGrid(n);
     EXPECT_GT(measureDeviation(bordered, other, limit, 0.01).bound, limit);
     snapVerticesToFarPoints(bordered, other, {onBorder}, limit, 0.1);
-    for (int j = 0; j <= n; ++j) EXPECT_EQ(bordered.positions[(n + 1) * j], flat[(n + 1) * j]) << "border vertex (0, " << j << ")";
+    for (int j = 0; j <= n; ++j)
+      EXPECT_EQ(bordered.positions[(n + 1) * j], flat[(n + 1) * j]) << "border vertex (0, " << j << ")";
     for (int q = 0; q < bordered.numQuads(); ++q) EXPECT_GT(scaledJacobian(bordered, q), 0.1) << "quad " << q;
   }
   // A tip across a gap: the surface is two flat sheets, the quads cover one; the point on the

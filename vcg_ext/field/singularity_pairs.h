@@ -37,9 +37,10 @@ int cancelAdjacentSingularityPairs(const SurfaceMesh& mesh, CrossField& field, c
 // was solved with, its curvature spread over the field's scale: with the Levi-Civita transport
 // itself the smoothest field gathers the noise's own curvature into new singularities beside
 // the pair). The index inside sums to zero (the field around it is the same), and a smooth
-// field with nothing to follow inside has no singularity there. Kept only if the index of the neighbourhood's
-// vertices drops by two quarters in all (a third singularity of a cluster may move), no index
-// of a half or more appears and no border vertex's changes; faces marked fixed stay as they are.
+// field with nothing to follow inside has no singularity there. Kept only if the index of the
+// neighbourhood's vertices drops by two quarters in all (a third singularity of a cluster may
+// move), no index of a half or more appears and no border vertex's changes; faces marked fixed
+// stay as they are.
 
 /// Returns the number of pairs cancelled. `connectionCorrection[f][i]`: the rotation added to
 /// the transport across edge i of face f (ρ of field_generation.cpp: the connection whose

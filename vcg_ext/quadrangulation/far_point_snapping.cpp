@@ -3,6 +3,7 @@
 #include "metrics/quad_quality.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
@@ -21,7 +22,9 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
     if (d > limit) missed.emplace_back(d, i);
   }
   if (missed.empty()) return 0;
-  std::sort(missed.begin(), missed.end(), [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+  std::sort(missed.begin(), missed.end(), [](const auto& a, const auto& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
   // Border vertices (on an edge of one quad) stay where they are.
   std::unordered_map<std::uint64_t, int> edgeUses;
   auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };

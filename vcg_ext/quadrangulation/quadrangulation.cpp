@@ -1,8 +1,8 @@
 #include "quadrangulation/quadrangulation.h"
 
 #include "mesh/closest_point_index.h"
-#include "quadrangulation/far_point_snapping.h"
 #include "metrics/quad_quality.h"
+#include "quadrangulation/far_point_snapping.h"
 #include "util/worker_threads.h"
 
 #include <algorithm>
@@ -196,7 +196,8 @@ bool reduceFolds(QuadrangulationResult& r, const PatchLayout& layout, const Quad
   // folds no fewer than r or is not accepted.
   // `dropped`, if given, is set once the candidate's result is no longer wanted: it then
   // stops between its sampling, its smoothing and its measuring.
-  auto attempt = [&](int k, const std::atomic<bool>* dropped = nullptr) -> std::optional<std::pair<QuadrangulationResult, int>> {
+  auto attempt = [&](int k,
+                     const std::atomic<bool>* dropped = nullptr) -> std::optional<std::pair<QuadrangulationResult, int>> {
     auto droppedNow = [&] { return dropped && dropped->load(); };
     QuadrangulationResult c = r;
     c.restoredVertices = 0;
