@@ -4,11 +4,21 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <map>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
 
 namespace fcql {
+
+namespace {
+
+/// At most this many spots, or this share of the quads' vertices, get a vertex each.
+constexpr double kFewSpots = 16;
+constexpr double kSpotShare = 0.01;
+
+}  // namespace
 
 int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<Vec3>& far,
                             double limit, double floor) {
@@ -37,11 +47,38 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
   const QuadJacobian jacobian(quads);
   std::vector<int> around;
   std::vector<double> before, after;
-  std::vector<Vec3> taken;
+  // The points taken, bucketed on a grid of cells as large as the largest distance (the farthest
+  // a point looks for one taken before): each point looks at the 27 cells around its own.
+  const double cell = missed.front().first;
+  auto cellOf = [&](const Vec3& p) {
+    return std::array<long long, 3>{{(long long)std::floor(p.x() / cell), (long long)std::floor(p.y() / cell),
+                                     (long long)std::floor(p.z() / cell)}};
+  };
+  std::map<std::array<long long, 3>, std::vector<Vec3>> taken;
+  auto nearTaken = [&](const Vec3& p, double distance) {
+    const auto c = cellOf(p);
+    for (long long dx : {-1, 0, 1})
+      for (long long dy : {-1, 0, 1})
+        for (long long dz : {-1, 0, 1}) {
+          const auto it = taken.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
+          if (it != taken.end())
+            for (const Vec3& t : it->second)
+              if ((t - p).norm() < distance) return true;
+        }
+    return false;
+  };
+  // The spots: the points left once those near one before are dropped. Where they are many,
+  // the quads miss the surface widely, not at a few tips (quads far coarser than its curves,
+  // or a bound finer than its detail), and only smaller quads help: nothing is moved.
+  std::size_t spots = 0;
+  for (const auto& [distance, i] : missed)
+    if (!nearTaken(far[i], distance)) ++spots, taken[cellOf(far[i])].push_back(far[i]);
+  if (double(spots) > std::max(kFewSpots, kSpotShare * double(quads.numVertices()))) return 0;
+  taken.clear();  // from here on, the points a vertex went onto
   int moved = 0;
   for (const auto& [distance, i] : missed) {
     const Vec3& p = far[i];
-    if (std::any_of(taken.begin(), taken.end(), [&](const Vec3& t) { return (t - p).norm() < distance; })) continue;
+    if (nearTaken(p, distance)) continue;
     std::array<int, 3> corners = quadIndex.triangle(quadIndex.closest(p).triangle);
     std::sort(corners.begin(), corners.end(), [&](int a, int b) {
       const double da = (quads.positions[a] - p).squaredNorm(), db = (quads.positions[b] - p).squaredNorm();
@@ -69,7 +106,7 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
         quads.positions[v] = was;
         continue;
       }
-      taken.push_back(p);
+      taken[cellOf(p)].push_back(p);
       ++moved;
       break;
     }

@@ -26,6 +26,9 @@ namespace fcql {
 /// or below where it was above (or fold one), or put the midpoint of one of its quad edges
 /// farther than `limit` from the surface (a bridge to another part of it, across a gap narrower
 /// than a quad); the triangle's next corner is tried.
+/// Where the spots (the points left once those near one before are dropped) are more than 16 and
+/// more than 1% of the quads' vertices, the quads miss the surface widely, not at a few tips
+/// (quads far coarser than its curves, or a bound finer than its detail): nothing moves.
 /// Returns how many vertices moved. The connectivity does not change, and moved vertices lie on
 /// the surface.
 int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<Vec3>& far,
