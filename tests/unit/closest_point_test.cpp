@@ -1,5 +1,6 @@
 #include "mesh/generators.h"
 #include "mesh/closest_point_index.h"
+#include "mesh/point_buckets.h"
 
 #include <gtest/gtest.h>
 
@@ -57,4 +58,33 @@ TEST(ClosestPointIndex, AgreesWithBruteForceNearFarAndOutsideTheGrid) {
         ++lattice;
       }
   EXPECT_EQ(lattice, 17 * 17 * 7);
+}
+
+TEST(PointBuckets, NearestWithinACellAgreesWithBruteForce) {
+  // Any point within a cell of the query is found, whatever cell it fell in; farther ones may
+  // be missed (infinity), never reported nearer than they are. `enough` stops at the first
+  // point that close, which is then at most that far.
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(-2, 2);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 400; ++i) points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+  const double cell = 0.5;
+  PointBuckets buckets(points, cell);
+  EXPECT_EQ(buckets.nearest(Vec3(0, 0, 0)), std::numeric_limits<double>::infinity());  // nothing added yet
+  buckets.addAll();
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 p(coordinate(random), coordinate(random), coordinate(random));
+    double truth = std::numeric_limits<double>::infinity();
+    for (const Vec3& q : points) truth = std::min(truth, (q - p).norm());
+    const double found = buckets.nearest(p);
+    if (truth <= cell) EXPECT_EQ(found, truth);
+    else EXPECT_GE(found, truth);
+    const double early = buckets.nearest(p, 0.3);
+    if (truth <= 0.3) EXPECT_LE(early, 0.3);
+    else if (truth <= cell) EXPECT_EQ(early, truth);
+  }
+  buckets.clear();
+  EXPECT_EQ(buckets.nearest(points[0]), std::numeric_limits<double>::infinity());
+  buckets.add(7);
+  EXPECT_EQ(buckets.nearest(points[7]), 0.0);
 }

@@ -205,3 +205,15 @@ TEST(QuadQuality, DeviationBoundIsAnUpperBoundAndTightWhereAPassFails) {
   // millions of far samples.
   EXPECT_LT(failed.farPoints.size(), 50000u);
 }
+
+TEST(QuadQuality, AMoveSpoilsAQuadItTakesToTheFloorOrFolds) {
+  // Above the floor to it or below spoils; below it already, only a fold does; folded ones
+  // getting worse or better do not; the figures are compared pairwise.
+  EXPECT_FALSE(spoilsQuads({0.9, 0.5}, {0.8, 0.2}, 0.1));
+  EXPECT_TRUE(spoilsQuads({0.9, 0.5}, {0.8, 0.1}, 0.1));
+  EXPECT_FALSE(spoilsQuads({0.05}, {0.01}, 0.1));
+  EXPECT_TRUE(spoilsQuads({0.05}, {0.0}, 0.1));
+  EXPECT_FALSE(spoilsQuads({-0.2}, {-0.5}, 0.1));
+  EXPECT_FALSE(spoilsQuads({-0.2}, {0.5}, 0.1));
+  EXPECT_FALSE(spoilsQuads({}, {}, 0.1));
+}

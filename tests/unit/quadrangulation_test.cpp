@@ -197,6 +197,27 @@ TEST(Quadrangulation, QuadMeshCheckFindsDefects) {
   EXPECT_FALSE(bad.problem.empty());
 }
 
+TEST(Quadrangulation, BorderVerticesAreTheEndsOfEdgesOfOneQuad) {
+  // A 3 × 3 grid of quads: its 12 outer vertices are on the border, the 4 inner ones not.
+  QuadMesh m;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) m.positions.emplace_back(i, j, 0);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) m.quads.push_back({4 * j + i, 4 * j + i + 1, 4 * j + i + 5, 4 * j + i + 4});
+  m.positions.emplace_back(9, 9, 9);  // used by no quad: not on the border
+  const std::vector<char> border = quadBorderVertices(m);
+  ASSERT_EQ(border.size(), m.positions.size());
+  for (int v = 0; v < 16; ++v) {
+    const int i = v % 4, j = v / 4;
+    EXPECT_EQ(border[v], (i == 0 || i == 3 || j == 0 || j == 3) ? 1 : 0) << v;
+  }
+  EXPECT_EQ(border[16], 0);
+  // The middle quad gone: a hole, whose 4 corners join the border.
+  m.quads.erase(m.quads.begin() + 4);
+  const std::vector<char> holed = quadBorderVertices(m);
+  for (int v : {5, 6, 9, 10}) EXPECT_EQ(holed[v], 1) << v;
+}
+
 TEST(Quadrangulation, TwoComponentsGiveTwoClosedQuadMeshes) {
   // A rounded box and a torus beside it, in one mesh: each component gets its own layout and
   // quads; the result has both, closed, with the genus of the torus.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <sstream>
+#include <unordered_set>
 
 namespace fcql {
 namespace {
@@ -147,6 +148,21 @@ void growAcrossQuads(const QuadMesh& mesh, std::vector<char>& marked, int rings)
         for (int v : q) grown[v] = 1;
     marked.swap(grown);
   }
+}
+
+std::vector<char> quadBorderVertices(const QuadMesh& mesh) {
+  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  std::unordered_set<std::uint64_t> directed;
+  directed.reserve(4 * mesh.quads.size());
+  for (const auto& q : mesh.quads)
+    for (int i = 0; i < 4; ++i) directed.insert(key(q[i], q[(i + 1) % 4]));
+  std::vector<char> border(mesh.positions.size(), 0);
+  for (const auto& q : mesh.quads)
+    for (int i = 0; i < 4; ++i) {
+      const int a = q[i], b = q[(i + 1) % 4];
+      if (!directed.count(key(b, a))) border[a] = border[b] = 1;
+    }
+  return border;
 }
 
 }  // namespace fcql

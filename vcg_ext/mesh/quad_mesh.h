@@ -54,6 +54,10 @@ SurfaceTopology triangleMeshTopology(int numVertices, const std::vector<std::arr
 /// within `rings` quads of those marked (`marked`: one flag per vertex).
 void growAcrossQuads(const QuadMesh& mesh, std::vector<char>& marked, int rings);
 
+/// One flag per vertex: 1 for a vertex on the border, an end of a directed quad edge that no
+/// quad has the other way round (on a consistently oriented manifold: an edge of one quad).
+std::vector<char> quadBorderVertices(const QuadMesh& mesh);
+
 /// OBJ text with `v` and `f a b c d` lines only.
 std::string quadMeshToObj(const QuadMesh& mesh);
 

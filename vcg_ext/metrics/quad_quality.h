@@ -117,6 +117,15 @@ private:
   Vec3 normalFromKept(int v) const;
 };
 
+/// Whether moving a vertex spoiled a quad that depends on it: given the quads' figures before
+/// and after the move (QuadJacobian::values, same order), one fell from above `floor` to it or
+/// below, or from above 0 to 0 or below (folded, also where it was at the floor already).
+inline bool spoilsQuads(const std::vector<double>& before, const std::vector<double>& after, double floor) {
+  for (std::size_t i = 0; i < before.size() && i < after.size(); ++i)
+    if ((before[i] > floor && after[i] <= floor) || (before[i] > 0 && after[i] <= 0)) return true;
+  return false;
+}
+
 struct QuadQuality {
   double misalignedPercent = 0;     ///< % of quads misaligned by more than the threshold
   double meanMisalignmentDeg = 0;   ///< mean over quads of the larger angle, degrees

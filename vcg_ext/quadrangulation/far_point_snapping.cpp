@@ -1,13 +1,11 @@
 #include "quadrangulation/far_point_snapping.h"
 
+#include "mesh/point_buckets.h"
 #include "metrics/quad_quality.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <cstdint>
-#include <unordered_map>
 #include <utility>
 
 namespace fcql {
@@ -35,50 +33,26 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
   std::sort(missed.begin(), missed.end(), [](const auto& a, const auto& b) {
     return a.first > b.first || (a.first == b.first && a.second < b.second);
   });
-  // Border vertices (on an edge of one quad) stay where they are.
-  std::unordered_map<std::uint64_t, int> edgeUses;
-  auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
-  for (const auto& q : quads.quads)
-    for (int i = 0; i < 4; ++i) ++edgeUses[key(q[i], q[(i + 1) % 4])];
-  std::vector<char> border(quads.positions.size(), 0);
-  for (const auto& q : quads.quads)
-    for (int i = 0; i < 4; ++i)
-      if (edgeUses[key(q[i], q[(i + 1) % 4])] == 1) border[q[i]] = border[q[(i + 1) % 4]] = 1;
-  const QuadJacobian jacobian(quads);
-  std::vector<int> around;
-  std::vector<double> before, after;
-  // The points taken, bucketed on a grid of cells as large as the largest distance (the farthest
-  // a point looks for one taken before): each point looks at the 27 cells around its own.
-  const double cell = missed.front().first;
-  auto cellOf = [&](const Vec3& p) {
-    return std::array<long long, 3>{{(long long)std::floor(p.x() / cell), (long long)std::floor(p.y() / cell),
-                                     (long long)std::floor(p.z() / cell)}};
-  };
-  std::map<std::array<long long, 3>, std::vector<Vec3>> taken;
-  auto nearTaken = [&](const Vec3& p, double distance) {
-    const auto c = cellOf(p);
-    for (long long dx : {-1, 0, 1})
-      for (long long dy : {-1, 0, 1})
-        for (long long dz : {-1, 0, 1}) {
-          const auto it = taken.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
-          if (it != taken.end())
-            for (const Vec3& t : it->second)
-              if ((t - p).norm() < distance) return true;
-        }
-    return false;
-  };
+  // The points taken, bucketed in cells as large as the largest distance (the farthest a
+  // point looks for one taken before).
+  PointBuckets taken(far, missed.front().first);
   // The spots: the points left once those near one before are dropped. Where they are many,
   // the quads miss the surface widely, not at a few tips (quads far coarser than its curves,
   // or a bound finer than its detail), and only smaller quads help: nothing is moved.
   std::size_t spots = 0;
   for (const auto& [distance, i] : missed)
-    if (!nearTaken(far[i], distance)) ++spots, taken[cellOf(far[i])].push_back(far[i]);
+    if (!(taken.nearest(far[i]) < distance)) ++spots, taken.add(i);
   if (double(spots) > std::max(kFewSpots, kSpotShare * double(quads.numVertices()))) return 0;
   taken.clear();  // from here on, the points a vertex went onto
+  // Border vertices stay where they are.
+  const std::vector<char> border = quadBorderVertices(quads);
+  const QuadJacobian jacobian(quads);
+  std::vector<int> around;
+  std::vector<double> before, after;
   int moved = 0;
   for (const auto& [distance, i] : missed) {
     const Vec3& p = far[i];
-    if (nearTaken(p, distance)) continue;
+    if (taken.nearest(p) < distance) continue;
     std::array<int, 3> corners = quadIndex.triangle(quadIndex.closest(p).triangle);
     std::sort(corners.begin(), corners.end(), [&](int a, int b) {
       const double da = (quads.positions[a] - p).squaredNorm(), db = (quads.positions[b] - p).squaredNorm();
@@ -91,9 +65,7 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
       const Vec3 was = quads.positions[v];
       quads.positions[v] = p;
       jacobian.values(around, after);
-      bool spoils = false;
-      for (std::size_t k = 0; k < around.size() && !spoils; ++k)
-        spoils = (before[k] > floor && after[k] <= floor) || (before[k] > 0 && after[k] <= 0);
+      bool spoils = spoilsQuads(before, after, floor);
       // The quads' edges at v stay near the surface: v does not bridge over to another part of
       // it (across a gap narrower than a quad).
       for (int q : jacobian.quadsAround(v)) {
@@ -106,7 +78,7 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
         quads.positions[v] = was;
         continue;
       }
-      taken[cellOf(p)].push_back(p);
+      taken.add(i);
       ++moved;
       break;
     }

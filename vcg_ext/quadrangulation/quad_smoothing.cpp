@@ -6,6 +6,7 @@
 #include "quadrangulation/fold_repair.h"
 
 #include "mesh/closest_point_index.h"
+#include "mesh/point_buckets.h"
 #include "util/worker_threads.h"
 #include "metrics/quad_quality.h"
 #include "util/math_constants.h"
@@ -419,17 +420,14 @@ SmoothingReport smoothWhole(QuadMesh& quads, const std::vector<Vec3>& surfacePos
   // Neighbours along quad edges; border vertices (an edge used by one quad) are fixed.
   const int nv = quads.numVertices();
   std::vector<std::vector<int>> neighbours(nv);
-  std::map<std::pair<int, int>, int> directed;
   for (const auto& q : quads.quads)
     for (int i = 0; i < 4; ++i) {
       const int a = q[i], b = q[(i + 1) % 4];
-      directed[{a, b}] += 1;
       neighbours[a].push_back(b);
       neighbours[b].push_back(a);
     }
-  std::vector<char> fixed(nv, 0);
-  for (const auto& e : directed)
-    if (!directed.count({e.first.second, e.first.first})) fixed[e.first.first] = fixed[e.first.second] = kFixed;
+  std::vector<char> fixed = quadBorderVertices(quads);
+  for (char& f : fixed) f = f ? kFixed : 0;
   const std::vector<char> onBorder = fixed;
   for (auto& n : neighbours) {
     std::sort(n.begin(), n.end());
@@ -724,26 +722,6 @@ SmoothingReport smoothQuadMesh(QuadMesh& quads, const std::vector<Vec3>& surface
 
 namespace {
 
-/// The distance from p (in cell c of `cells`, a grid of cell `radius` over the points `far`)
-/// to the nearest far point, looked for in the 27 cells around c, or any distance up to
-/// radius / 2 (all the same to the caller, which returns such a vertex fully), so that the
-/// search ends at the first such point: a pass far from the bound has millions of far points.
-double nearestFarPoint(const std::map<std::array<long long, 3>, std::vector<int>>& cells, const std::vector<Vec3>& far,
-                       const Vec3& p, const std::array<long long, 3>& c, double radius) {
-  double nearest = std::numeric_limits<double>::infinity();
-  for (long long dx : {0, -1, 1})
-    for (long long dy : {0, -1, 1})
-      for (long long dz : {0, -1, 1}) {
-        auto it = cells.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
-        if (it == cells.end()) continue;
-        for (int i : it->second) {
-          nearest = std::min(nearest, (far[i] - p).norm());
-          if (nearest <= radius / 2) return nearest;
-        }
-      }
-  return nearest;
-}
-
 }  // namespace
 
 int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, const std::vector<Vec3>& far,
@@ -751,13 +729,11 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   const int nv = quads.numVertices();
   if (int(sampled.size()) != nv) throw std::invalid_argument("restoreSampledPositions: one sampled position per vertex");
   if (far.empty() || !(radius > 0)) return 0;
-  // Buckets of the far points on a grid of cell `radius`: each vertex looks at 27 cells.
-  auto cellOf = [&](const Vec3& p) {
-    return std::array<long long, 3>{{(long long)std::floor(p.x() / radius), (long long)std::floor(p.y() / radius),
-                                     (long long)std::floor(p.z() / radius)}};
-  };
-  std::map<std::array<long long, 3>, std::vector<int>> cells;
-  for (int i = 0; i < int(far.size()); ++i) cells[cellOf(far[i])].push_back(i);
+  // The far points bucketed in cells of `radius`. A far point within radius / 2 returns a
+  // vertex fully, so the search stops at the first one found there: a pass far from the bound
+  // has millions of far points.
+  PointBuckets cells(far, radius);
+  cells.addAll();
   const QuadJacobian jacobian(quads);
   std::vector<int> around;
   std::vector<double> before, after;
@@ -767,17 +743,14 @@ int restoreSampledPositions(QuadMesh& quads, const std::vector<Vec3>& sampled, c
   for (int v = 0; v < nv; ++v) {
     if (jacobian.quadsAround(v).empty() || quads.positions[v] == sampled[v]) continue;
     const Vec3 smoothed = quads.positions[v];
-    const double nearest = nearestFarPoint(cells, far, smoothed, cellOf(smoothed), radius);
+    const double nearest = cells.nearest(smoothed, radius / 2);
     if (!(nearest < radius)) continue;
     const double share = std::min(1.0, 2.0 * (1.0 - nearest / radius));
     jacobian.dependents(v, around);
     jacobian.values(around, before);
     quads.positions[v] = smoothed + (sampled[v] - smoothed) * share;
-    bool folds = false;
     jacobian.values(around, after);
-    for (std::size_t i = 0; i < around.size() && !folds; ++i)
-      folds = (before[i] > kMinScaledJacobian && after[i] <= kMinScaledJacobian) || (before[i] > 0 && after[i] <= 0);
-    if (folds) quads.positions[v] = smoothed;
+    if (spoilsQuads(before, after, kMinScaledJacobian)) quads.positions[v] = smoothed;
     else ++count;
   }
   return count;
