@@ -38,7 +38,11 @@ quad_value() { section_value "$1" quad "$2"; }
 # Since the last fold repair may move corners held on the scan's feature lines (2026-12-06,
 # eighteenth session), 0 at 0.02 and 5 at 0.01, all of those with every corner free to move;
 # 4 at 0.01 in the twenty-fourth session's run (2026-12-07).
-known_folds="dragon@0.01=4"
+# 1 at 0.02 since spots are pulled up (2026-12-08, far_point_snapping.h: its distance fallback
+# touches 1 patch instead of 93): a quad of a strip 0.05-0.3 long that the layout squeezes past a
+# scan triangle turned over, which folds there by chance before and after, each at some sizes
+# (at --scale 0.018 / 0.02 / 0.022 / 0.025: before 1 / 0 / 0 / 3, after 0 / 1 / 1 / 2).
+known_folds="dragon@0.02=1 dragon@0.01=4"
 
 # Runs that may fail in the zero-chain rounds: MESH@SCALE. Such a failure is reported, not
 # counted; any other failure counts. None now: the dragon at 0.01, whose side-length parts

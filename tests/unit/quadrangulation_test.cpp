@@ -896,6 +896,38 @@ TEST(Quadrangulation, SmoothingIsUndoneAroundPointsFarFromTheSurface) {
   EXPECT_THROW(restoreSampledPositions(grid, {Vec3::Zero()}, {far}, 2.0), std::invalid_argument);
 }
 
+namespace {
+
+/// The surface of an n × n grid of unit squares in z = 0 with one more vertex, `tip`: inside a
+/// cell, that cell's square becomes a pyramid onto it; at a grid point, it replaces that vertex.
+std::pair<std::vector<Vec3>, std::vector<std::array<int, 3>>> gridSurfaceWithTip(int n, const Vec3& tip) {
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) positions.push_back(Vec3(i, j, 0));
+  const int apex = int(positions.size());
+  positions.push_back(tip);
+  const int ci = int(std::floor(tip.x())), cj = int(std::floor(tip.y()));
+  const bool inCell = tip.x() != ci || tip.y() != cj;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      if (inCell && i == ci && j == cj) {
+        for (auto [u, v] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) triangles.push_back({u, v, apex});
+      } else {
+        triangles.push_back({a, b, c});
+        triangles.push_back({a, c, d});
+      }
+    }
+  if (!inCell)  // the tip replaces the grid vertex under it
+    for (auto& t : triangles)
+      for (int& v : t)
+        if (v == (n + 1) * cj + ci) v = apex;
+  return std::make_pair(positions, triangles);
+}
+
+}  // namespace
+
 TEST(Quadrangulation, VerticesGoOntoTheTipsTheQuadsMiss) {
   // A flat 9×9 grid of unit quads over a surface that is the same grid with one vertex lifted
   // 0.8 (a spike narrower than a quad), the bound 0.5. The quad vertex under the spike goes onto
@@ -903,31 +935,7 @@ TEST(Quadrangulation, VerticesGoOntoTheTipsTheQuadsMiss) {
   // surface is not taken. A tip at a border vertex, or over the middle of a quad (where its
   // nearest corners would fold their quads), moves nothing.
   const int n = 9;
-  auto surfaceWithTip = [&](const Vec3& tip) {
-    std::vector<Vec3> positions;
-    std::vector<std::array<int, 3>> triangles;
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) positions.push_back(Vec3(i, j, 0));
-    const int apex = int(positions.size());
-    positions.push_back(tip);
-    const int ci = int(std::floor(tip.x())), cj = int(std::floor(tip.y()));
-    const bool inCell = tip.x() != ci || tip.y() != cj;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const int a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-        if (inCell && i == ci && j == cj) {
-          for (auto [u, v] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) triangles.push_back({u, v, apex});
-        } else {
-          triangles.push_back({a, b, c});
-          triangles.push_back({a, c, d});
-        }
-      }
-    if (!inCell)  // the tip replaces the grid vertex under it
-      for (auto& t : triangles)
-        for (int& v : t)
-          if (v == (n + 1) * cj + ci) v = apex;
-    return std::make_pair(positions, triangles);
-  };
+  auto surfaceWithTip = [&](const Vec3& tip) { return gridSurfaceWithTip(n, tip); };
   const double limit = 0.5;
 
   const Vec3 tip(4, 4, 0.8);
@@ -991,6 +999,51 @@ TEST(Quadrangulation, VerticesGoOntoTheTipsTheQuadsMiss) {
     EXPECT_EQ(std::count(loose.positions.begin(), loose.positions.end(), middle), 1);
     for (int q = 0; q < loose.numQuads(); ++q) EXPECT_GT(scaledJacobian(loose, q), 0.1) << "quad " << q;
     EXPECT_LE(measureDeviation(loose, other, limit, 0.01).bound, limit);
+  }
+}
+
+TEST(Quadrangulation, QuadsArePulledUpASpikeLongerThanTheyAreWide) {
+  // The 9 × 9 grid of unit squares with the vertex (4, 4) lifted 3.5: a spike three and a half
+  // quads tall and two wide, the bound 0.5. Snapping, in rounds as the quad stage runs it (each
+  // round on the points still too far, kept while the bound drops), takes vertices only part of
+  // the way up (higher, their quads would be nearly flat against the surface normal there): the
+  // quads still miss the tip by more than three times the bound. Pulled, the vertex under the
+  // tip goes onto it and the quads around follow: within 1.5 times the bound (what is left is
+  // the bend of the quads at the spike's foot), no quad folded, the border in place, every
+  // vertex on the surface.
+  const int n = 9;
+  const Vec3 tip(4, 4, 3.5);
+  const auto [P, T] = gridSurfaceWithTip(n, tip);
+  const ClosestPointIndex surface(P, T);
+  const double limit = 0.5;
+  auto rounds = [&](QuadMesh& m, const auto& move) {
+    for (int round = 0; round < 3; ++round) {
+      const SurfaceDeviation d = measureDeviation(m, surface, limit, 0.01);
+      if (d.bound <= limit) return;
+      const std::vector<Vec3> was = m.positions;
+      if (move(m, d.farPoints) == 0) return;
+      if (!(measureDeviation(m, surface, limit, 0.01).bound < d.bound)) return void(m.positions = was);
+    }
+  };
+  auto snap = [&](QuadMesh& m, const std::vector<Vec3>& far) {
+    return snapVerticesToFarPoints(m, surface, far, limit, 0.1);
+  };
+  auto pull = [&](QuadMesh& m, const std::vector<Vec3>& far) {
+    return pullVerticesToFarPoints(m, P, T, surface, far, limit, 0.1, SmoothingOptions(), 3);
+  };
+  QuadMesh snapped = test::planarGrid(n);
+  rounds(snapped, snap);
+  EXPECT_GT(measureDeviation(snapped, surface, limit, 0.01).bound, 3 * limit) << "snapping alone reached the tip";
+  QuadMesh grid = test::planarGrid(n);
+  const std::vector<Vec3> flat = grid.positions;
+  rounds(grid, pull);
+  EXPECT_LE(measureDeviation(grid, surface, limit, 0.01).bound, 1.5 * limit);
+  EXPECT_EQ(std::count(grid.positions.begin(), grid.positions.end(), tip), 1);
+  for (int q = 0; q < grid.numQuads(); ++q) EXPECT_GT(scaledJacobian(grid, q), 0) << "quad " << q;
+  for (int v = 0; v < grid.numVertices(); ++v) {
+    const int i = v % (n + 1), j = v / (n + 1);
+    if (i == 0 || j == 0 || i == n || j == n) EXPECT_EQ(grid.positions[v], flat[v]) << "border vertex " << v;
+    EXPECT_LT(surface.closest(grid.positions[v]).distance, 1e-9) << "vertex " << v;
   }
 }
 

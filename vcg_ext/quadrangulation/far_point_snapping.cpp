@@ -2,6 +2,7 @@
 
 #include "mesh/point_buckets.h"
 #include "metrics/quad_quality.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <array>
@@ -19,7 +20,7 @@ constexpr double kSpotShare = 0.01;
 }  // namespace
 
 int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<Vec3>& far,
-                            double limit, double floor) {
+                            double limit, double floor, std::vector<int>* pulled) {
   if (far.empty() || quads.numQuads() == 0 || !(limit > 0)) return 0;
   const ClosestPointIndex quadIndex(quads.positions, quadTriangles(quads));
   // The points of the surface the quads miss, farthest first.
@@ -49,6 +50,7 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
   const QuadJacobian jacobian(quads);
   std::vector<int> around;
   std::vector<double> before, after;
+  std::vector<char> isPulled(pulled ? quads.positions.size() : 0, 0);
   int moved = 0;
   for (const auto& [distance, i] : missed) {
     const Vec3& p = far[i];
@@ -58,32 +60,91 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
       const double da = (quads.positions[a] - p).squaredNorm(), db = (quads.positions[b] - p).squaredNorm();
       return da < db || (da == db && a < b);
     });
+    int pull = -1;  // with `pulled`: the corner to go onto p though its quads spoil
+    bool placed = false;
     for (int v : corners) {
-      if (border[v] || jacobian.quadsAround(v).empty()) continue;
+      if (border[v] || jacobian.quadsAround(v).empty() || (pulled && isPulled[v])) continue;
       jacobian.dependents(v, around);
       jacobian.values(around, before);
       const Vec3 was = quads.positions[v];
       quads.positions[v] = p;
       jacobian.values(around, after);
-      bool spoils = spoilsQuads(before, after, floor);
+      const bool spoils = spoilsQuads(before, after, floor);
       // The quads' edges at v stay near the surface: v does not bridge over to another part of
       // it (across a gap narrower than a quad).
+      bool bridges = false;
       for (int q : jacobian.quadsAround(v)) {
         const auto& f = quads.quads[q];
         const int k = int(std::find(f.begin(), f.end(), v) - f.begin());
         for (int w : {f[(k + 1) % 4], f[(k + 3) % 4]})
-          spoils = spoils || surface.closest((p + quads.positions[w]) / 2).distance > limit;
+          bridges = bridges || surface.closest((p + quads.positions[w]) / 2).distance > limit;
       }
-      if (spoils) {
+      if (spoils || bridges) {
         quads.positions[v] = was;
+        if (bridges) continue;
+        // Pulling, the nearest corner that does not bridge goes: a farther one would stretch
+        // its quads across the spike's foot.
+        if (pulled) {
+          pull = v;
+          break;
+        }
         continue;
       }
       taken.add(i);
       ++moved;
+      placed = true;
       break;
+    }
+    if (!placed && pulled && pull >= 0) {
+      quads.positions[pull] = p;
+      isPulled[pull] = 1;
+      pulled->push_back(pull);
+      taken.add(i);
+      ++moved;
     }
   }
   return moved;
+}
+
+int pullVerticesToFarPoints(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
+                            const std::vector<std::array<int, 3>>& surfaceTriangles, const ClosestPointIndex& surface,
+                            const std::vector<Vec3>& far, double limit, double floor, SmoothingOptions smoothing,
+                            int rings) {
+  const std::vector<Vec3> was = quads.positions;
+  std::vector<double> before, after;
+  QuadJacobian(quads).all(before);
+  std::vector<int> pulled;
+  const int moved = snapVerticesToFarPoints(quads, surface, far, limit, floor, &pulled);
+  if (pulled.empty()) return moved;
+  const std::vector<Vec3> onPoints = quads.positions;  // the vertices moved onto far points there
+  const std::size_t nv = quads.positions.size();
+  std::vector<char> region(nv, 0);
+  for (int v : pulled) region[v] = 1;
+  growAcrossQuads(quads, region, rings);
+  smoothing.frozen.assign(nv, 1);
+  for (std::size_t v = 0; v < nv; ++v) smoothing.frozen[v] = region[v] ? 0 : 1;
+  for (int v : pulled) smoothing.frozen[v] = 1;
+  smoothQuadMesh(quads, surfacePositions, surfaceTriangles, smoothing);
+  // The parts of the region apart (two more rings: a quad's figure depends on the quads around
+  // its corners): each is undone if it folds a quad that was not folded.
+  std::vector<char> reach = region;
+  growAcrossQuads(quads, reach, 2);
+  UnionFind parts{int(nv)};
+  for (const auto& q : quads.quads)
+    for (int i = 1; i < 4; ++i)
+      if (reach[q[0]] && reach[q[i]]) parts.unite(q[0], q[i]);
+  QuadJacobian(quads).all(after);
+  std::vector<char> folds(nv, 0);  // per part (at its root): a quad folded that was not
+  for (int q = 0; q < quads.numQuads(); ++q) {
+    const int v = quads.quads[q][0];
+    if (reach[v] && before[q] > 0 && !(after[q] > 0)) folds[parts.find(v)] = 1;
+  }
+  int left = 0;  // vertices still on the far points they went onto
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (reach[v] && folds[parts.find(int(v))]) quads.positions[v] = was[v];
+    if (onPoints[v] != was[v] && quads.positions[v] == onPoints[v]) ++left;
+  }
+  return left;
 }
 
 }  // namespace fcql

@@ -6,12 +6,15 @@
 // spot (the dragon with fcql's own field: 20K quads 2.96 times the bound away, then 44K, 107K and
 // 192K quads, the last within it by 0.03%, all for a few such spots). Here the vertex of the
 // quads nearest to such a point goes onto it instead, one vertex per spot, so that the quads
-// reach it.
+// reach it. Where that vertex alone would spoil its quads (a spike longer than they are wide),
+// pullVerticesToFarPoints takes it there all the same and smooths the quads around it to follow.
 #pragma once
 
 #include "mesh/closest_point_index.h"
 #include "mesh/quad_mesh.h"
+#include "quadrangulation/quad_smoothing.h"
 
+#include <array>
 #include <vector>
 
 namespace fcql {
@@ -29,9 +32,24 @@ namespace fcql {
 /// Where the spots (the points left once those near one before are dropped) are more than 16 and
 /// more than 1% of the quads' vertices, the quads miss the surface widely, not at a few tips
 /// (quads far coarser than its curves, or a bound finer than its detail): nothing moves.
+/// With `pulled`, the spot goes to the nearest corner that does not bridge (nor is on the border)
+/// even where that corner's quads would spoil: it is then listed in `pulled` (once: it is not
+/// moved again), and the caller moves the quads around it (e.g. smooths them with it held) and
+/// checks them.
 /// Returns how many vertices moved. The connectivity does not change, and moved vertices lie on
 /// the surface.
 int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, const std::vector<Vec3>& far,
-                            double limit, double floor);
+                            double limit, double floor, std::vector<int>* pulled = nullptr);
+
+/// snapVerticesToFarPoints with `pulled`, then the quads within `rings` rings of the pulled
+/// vertices smoothed (`smoothing`, its `frozen` replaced: the pulled vertices held where they
+/// went, all but those rings frozen), so that they follow a spike longer than they are wide up to
+/// its tip. Each part of those rings apart from the others is undone, its pulled vertices
+/// included, if it folds a quad (QuadJacobian at 0 or below) that was not folded. Returns how
+/// many vertices are left on the far points they went onto.
+int pullVerticesToFarPoints(QuadMesh& quads, const std::vector<Vec3>& surfacePositions,
+                            const std::vector<std::array<int, 3>>& surfaceTriangles, const ClosestPointIndex& surface,
+                            const std::vector<Vec3>& far, double limit, double floor, SmoothingOptions smoothing,
+                            int rings);
 
 }  // namespace fcql
