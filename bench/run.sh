@@ -401,7 +401,11 @@ fi
     0.025: before 1 / 0 / 0 / 3, after 0 / 1 / 1 / 2. Tried without effect on it, not kept: that
     triangle shrunk to a corner for the smoothing's projection and its edges kept from the
     feature lines; the fold rounds' other ways (arc-length sides, the pass without the field) in
-    every round.
+    every round. The strip's cause: two singularities of that field 0.36 apart (at 43.5, 15.1,
+    3.9 and 43.2, 15.2, 4.1, beside the turned-over triangle), whose separatrices run side by
+    side 0.1 to 0.3 apart for several units (1058 beside 1209 and 1249, 1057 beside 1194); the
+    patches between them are the strip. A 0-1 program that took two candidates running that
+    close over a long stretch as conflicting, as it takes tangential crossings, would not make it.
   - Bunny, third noise seed: 5.8% → 5.5% of the quads off the field, least scaled Jacobian 0.12
     → 0.10, Hausdorff 0.95% → 0.92%.
   - All other rows (the 12 meshes, the other 8 noise rows, eight and lilium with their own
