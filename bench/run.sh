@@ -389,9 +389,12 @@ fi
     them (the field-aligned pass alone at 2%, measured with `--max-deviation 0.0115`: 38.0%), and
     the fallback's mean-value patches add to it.
   - Tried and not kept: skipping the patch-wise fallbacks and sizing the refinement by the bound
-    after the pulls (27685 quads after two refinements, 34.6% off the field, 1 folded quad). It
-    changes the order of the fallbacks for every mesh, which this session could not measure
-    widely enough.
+    after the pulls (27685 quads after two refinements, 34.6% off the field, 1 folded quad). On
+    the 12 meshes it changes three: camelhead 22449 → 12138 quads (one refinement instead of
+    two; 7.5% → 8.0% off the field, least scaled Jacobian 0.10 → 0.01), the dragon with its
+    field 41599 → 46327 quads after three small refinements (33.3% → 31.9%, no fold, quad stage
+    11.6 s → 22.0 s), and kitten 3947 → 7984 quads after three (7.3% → 5.7%): a fallback on a
+    few patches is cheaper than quads smaller everywhere.
   - Dragon, its shipped field: its patch-wise fallback touches 1 patch instead of 93 (33.8% →
     33.3% of the quads off the field, 13.6% → 13.3% of the faces). It now has 1 folded quad
     (scaled Jacobian −0.24; 0 before). That quad lies in a strip of quads 0.05 to 0.3 long (the
