@@ -60,8 +60,6 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
       const double da = (quads.positions[a] - p).squaredNorm(), db = (quads.positions[b] - p).squaredNorm();
       return da < db || (da == db && a < b);
     });
-    int pull = -1;  // with `pulled`: the corner to go onto p though its quads spoil
-    bool placed = false;
     for (int v : corners) {
       if (border[v] || jacobian.quadsAround(v).empty() || (pulled && isPulled[v])) continue;
       jacobian.dependents(v, around);
@@ -79,28 +77,16 @@ int snapVerticesToFarPoints(QuadMesh& quads, const ClosestPointIndex& surface, c
         for (int w : {f[(k + 1) % 4], f[(k + 3) % 4]})
           bridges = bridges || surface.closest((p + quads.positions[w]) / 2).distance > limit;
       }
-      if (spoils || bridges) {
+      // Pulling, the nearest corner that does not bridge goes, spoiling or not: a farther one
+      // would stretch its quads across the spike's foot.
+      if (bridges || (spoils && !pulled)) {
         quads.positions[v] = was;
-        if (bridges) continue;
-        // Pulling, the nearest corner that does not bridge goes: a farther one would stretch
-        // its quads across the spike's foot.
-        if (pulled) {
-          pull = v;
-          break;
-        }
         continue;
       }
+      if (spoils) isPulled[v] = 1, pulled->push_back(v);
       taken.add(i);
       ++moved;
-      placed = true;
       break;
-    }
-    if (!placed && pulled && pull >= 0) {
-      quads.positions[pull] = p;
-      isPulled[pull] = 1;
-      pulled->push_back(pull);
-      taken.add(i);
-      ++moved;
     }
   }
   return moved;
@@ -121,7 +107,7 @@ int pullVerticesToFarPoints(QuadMesh& quads, const std::vector<Vec3>& surfacePos
   std::vector<char> region(nv, 0);
   for (int v : pulled) region[v] = 1;
   growAcrossQuads(quads, region, rings);
-  smoothing.frozen.assign(nv, 1);
+  smoothing.frozen.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) smoothing.frozen[v] = region[v] ? 0 : 1;
   for (int v : pulled) smoothing.frozen[v] = 1;
   smoothQuadMesh(quads, surfacePositions, surfaceTriangles, smoothing);
